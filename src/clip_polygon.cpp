@@ -1,0 +1,83 @@
+#include "clip_polygon.h"
+
+#include <limits>
+
+namespace mfz {
+
+bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out) {
+  out.clear();
+  if (in.empty()) return true;
+  bool ok = true;
+  Vec3 start = in[in.size() - 1];
+  double d_start = plane.signed_distance(start);
+  for (int k = 0; k < in.size(); ++k) {
+    const Vec3& end = in[k];
+    const double d_end = plane.signed_distance(end);
+    const bool start_inside = d_start <= 0, end_inside = d_end <= 0;
+    if (start_inside != end_inside) {
+      // The signs differ strictly (one <= 0, the other > 0), so the
+      // denominator is never zero and t lies in [0, 1].
+      const double t = d_start / (d_start - d_end);
+      ok &= out.push(start + t * (end - start));
+    }
+    if (end_inside) ok &= out.push(end);
+    start = end;
+    d_start = d_end;
+  }
+  return ok;
+}
+
+void remove_points_outside(ClipPolygon& polygon, const Plane& plane) {
+  for (int k = polygon.size() - 1; k >= 0; --k)
+    if (plane.signed_distance(polygon[k]) > 0) polygon.erase(k);
+}
+
+namespace {
+
+Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length_sq = ab.squaredNorm();
+  if (length_sq == 0) return a;  // a degenerate edge is its end point
+  double t = (p - a).dot(ab) / length_sq;
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  return a + t * ab;
+}
+
+}  // namespace
+
+Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal) {
+  const Vec3 projected = p - normal.dot(p - loop[0]) * normal;
+  bool inside = true;
+  for (int k = 0; k < count && inside; ++k) {
+    const Vec3& a = loop[k];
+    const Vec3& b = loop[(k + 1) % count];
+    // Counter-clockwise about the normal: inside is to the left of every edge.
+    inside = (b - a).cross(projected - a).dot(normal) >= 0;
+  }
+  if (inside) return projected;
+  Vec3 best = loop[0];
+  double best_sq = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < count; ++k) {
+    const Vec3 c = closest_point_on_segment(p, loop[k], loop[(k + 1) % count]);
+    const double d = (c - p).squaredNorm();
+    if (d < best_sq) best_sq = d, best = c;
+  }
+  return best;
+}
+
+void reduce_polygon(ClipPolygon& polygon, int capacity) {
+  while (polygon.size() > capacity) {
+    const int n = polygon.size();
+    int weakest = 0;
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < n; ++k) {
+      const Vec3& prev = polygon[(k + n - 1) % n];
+      const Vec3& next = polygon[(k + 1) % n];
+      const double area = (polygon[k] - prev).cross(next - polygon[k]).norm();
+      if (area < least) least = area, weakest = k;
+    }
+    polygon.erase(weakest);
+  }
+}
+
+}  // namespace mfz

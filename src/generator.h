@@ -1,0 +1,37 @@
+#pragma once
+/// \file
+/// One interface for every generator: the built-in one and plugins loaded
+/// with dlopen are both reached through the C ABI's three functions.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "manifuzz/abi.h"
+
+namespace mfz {
+
+/// Fills a manifold with NaN and the counts with -1, so that a field the
+/// generator leaves unset shows up as non-finite or out of range.
+void poison(mfz_manifold& out);
+
+class Generator {
+ public:
+  /// The built-in clipping generator.
+  static Generator builtin();
+  /// `builtin`, or a path to a plugin `.so`. On failure: nullopt and a one-line
+  /// reason (missing file, not a shared library, missing symbol, wrong ABI).
+  static std::optional<Generator> open(const std::string& spec, std::string& error);
+
+  const std::string& name() const { return name_; }
+  /// Poisons `out`, then calls the generator; returns its status (0 = done,
+  /// non-zero = refused).
+  int32_t generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,
+                   mfz_manifold& out) const;
+
+ private:
+  std::shared_ptr<void> library_;  // keeps a plugin loaded while copies live
+  mfz_generate_fn generate_ = nullptr;
+  std::string name_;
+};
+
+}  // namespace mfz

@@ -1,0 +1,205 @@
+#include "hull.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <utility>
+
+#include "qhull_facets.h"
+#include "tolerances.h"
+
+namespace mfz {
+namespace {
+
+double diameter_of(const std::vector<mfz_vec3>& vertices) {
+  double best = 0;
+  for (size_t i = 0; i < vertices.size(); ++i)
+    for (size_t j = i + 1; j < vertices.size(); ++j)
+      best = std::max(best, (to_vec(vertices[i]) - to_vec(vertices[j])).squaredNorm());
+  return std::sqrt(best);
+}
+
+// Thickness of the cloud: distance from the plane through a well-spread triangle
+// to the point farthest from it. Zero-volume clouds are refused before Qhull so
+// that the message says why, and the threshold is relative to the cloud's size.
+std::string flatness_error(const std::vector<Vec3>& points) {
+  size_t i0 = 0, i1 = 0;
+  double far = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    for (size_t j = i + 1; j < points.size(); ++j) {
+      const double d = (points[i] - points[j]).squaredNorm();
+      if (d > far) far = d, i0 = i, i1 = j;
+    }
+  const double size = std::sqrt(far);
+  if (size == 0) return "all points coincide";
+  const Vec3 axis = (points[i1] - points[i0]) / size;
+  size_t i2 = i0;
+  double off_line = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec3 d = points[i] - points[i0];
+    const double dist = (d - d.dot(axis) * axis).norm();
+    if (dist > off_line) off_line = dist, i2 = i;
+  }
+  if (off_line <= tol::kFlatHull * size) return "all points lie on a line";
+  const Vec3 plane_normal = axis.cross(points[i2] - points[i0]).normalized();
+  double thickness = 0;
+  for (const Vec3& p : points) thickness = std::max(thickness, std::abs(plane_normal.dot(p - points[i0])));
+  if (thickness <= tol::kFlatHull * size) {
+    std::ostringstream why;
+    why << "all points lie within " << thickness / size << " L of a plane: the hull has no volume";
+    return why.str();
+  }
+  return {};
+}
+
+// Qhull gives each facet's vertices as an unordered set: order them
+// counter-clockwise about the outward normal by angle around their centroid
+// (a facet is convex, so the angular order is the loop).
+void order_counter_clockwise(std::vector<int>& loop, const std::vector<Vec3>& points, const Vec3& normal) {
+  Vec3 centroid = Vec3::Zero();
+  for (int id : loop) centroid += points[id];
+  centroid /= static_cast<double>(loop.size());
+  const Vec3 u = (points[loop[0]] - centroid).normalized();
+  const Vec3 v = normal.cross(u);
+  std::vector<std::pair<double, int>> keyed;
+  for (int id : loop) {
+    const Vec3 d = points[id] - centroid;
+    keyed.emplace_back(std::atan2(d.dot(v), d.dot(u)), id);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t k = 0; k < loop.size(); ++k) loop[k] = keyed[k].second;
+}
+
+// A vertex that lies on a straight stretch of a loop is not extreme (it sits on
+// an edge, or Qhull's merging left it inside a face): the contract lists
+// extreme points only, so it leaves every loop. Returns true when one was found.
+bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std::vector<Vec3>& points) {
+  std::map<int, int> faces_of;
+  for (const auto& loop : loops)
+    for (int id : loop) ++faces_of[id];
+  for (auto& loop : loops) {
+    const size_t n = loop.size();
+    for (size_t k = 0; k < n; ++k) {
+      const int id = loop[k];
+      const Vec3 in = points[id] - points[loop[(k + n - 1) % n]];
+      const Vec3 out = points[loop[(k + 1) % n]] - points[id];
+      const bool straight = in.cross(out).norm() <= 1e-12 * in.norm() * out.norm() && in.dot(out) > 0;
+      if (faces_of[id] >= 3 && !straight) continue;
+      for (auto& other : loops) other.erase(std::remove(other.begin(), other.end(), id), other.end());
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+mfz_hull Hull::view() const {
+  return {vertex_count(), vertices_.data(), face_count(), face_offsets_.data(), face_vertices_.data(),
+          face_normals_.data()};
+}
+
+Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,
+                      std::vector<Vec3> normals) {
+  Hull hull;
+  for (const Vec3& v : vertices) hull.vertices_.push_back(to_abi(v));
+  hull.face_offsets_.push_back(0);
+  for (const auto& loop : loops) {
+    hull.face_vertices_.insert(hull.face_vertices_.end(), loop.begin(), loop.end());
+    hull.face_offsets_.push_back(static_cast<int32_t>(hull.face_vertices_.size()));
+  }
+  for (const Vec3& n : normals) hull.face_normals_.push_back(to_abi(n));
+  std::map<std::pair<int, int>, int> edge_of;
+  for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
+    const auto& loop = loops[f];
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      const auto key = std::minmax(a, b);
+      auto found = edge_of.find(key);
+      if (found == edge_of.end()) {
+        edge_of.emplace(key, static_cast<int>(hull.edges_.size()));
+        hull.edges_.push_back({a, b, f, -1});
+      } else {
+        hull.edges_[found->second].face_right = f;
+      }
+    }
+  }
+  hull.diameter_ = diameter_of(hull.vertices_);
+  return hull;
+}
+
+HullBuild build_hull(const std::vector<Vec3>& points) {
+  if (points.size() < 4) return {std::nullopt, "fewer than four points (" + std::to_string(points.size()) + ")"};
+  for (const Vec3& p : points)
+    if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
+  if (std::string why = flatness_error(points); !why.empty()) return {std::nullopt, why};
+
+  std::string qhull_error;
+  const std::vector<QhullFacet> facets = qhull_facets(points, /*triangulate=*/false, qhull_error);
+  if (facets.empty()) return {std::nullopt, "qhull: " + qhull_error};
+
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (const QhullFacet& facet : facets) {
+    loops.push_back(facet.point_ids);
+    normals.push_back(facet.normal.normalized());
+    order_counter_clockwise(loops.back(), points, normals.back());
+  }
+  while (drop_one_non_extreme_vertex(loops, points)) {
+  }
+
+  // Renumber the surviving points as the hull's vertices, in input order so
+  // that the numbering does not depend on Qhull's facet order.
+  std::vector<int> index_of(points.size(), -1);
+  for (const auto& loop : loops)
+    for (int id : loop) index_of[id] = 0;
+  std::vector<Vec3> vertices;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (index_of[i] == 0) index_of[i] = static_cast<int>(vertices.size()), vertices.push_back(points[i]);
+  for (auto& loop : loops)
+    for (int& id : loop) id = index_of[id];
+
+  Hull hull = Hull::from_faces(std::move(vertices), std::move(loops), std::move(normals));
+  if (std::string why = validate_hull(hull); !why.empty()) return {std::nullopt, "invalid hull: " + why};
+  return {std::move(hull), {}};
+}
+
+std::string validate_hull(const Hull& hull) {
+  std::ostringstream why;
+  const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
+  if (v < 4 || f < 4) return "fewer than four vertices or faces";
+  if (v - e + f != 2) {
+    why << "Euler characteristic V - E + F = " << v - e + f << ", not 2";
+    return why.str();
+  }
+  std::map<std::pair<int, int>, int> directed;
+  for (int face = 0; face < f; ++face) {
+    if (hull.face_size(face) < 3) return "a face has fewer than three vertices";
+    for (int k = 0; k < hull.face_size(face); ++k)
+      ++directed[{hull.face_vertex(face, k), hull.face_vertex(face, (k + 1) % hull.face_size(face))}];
+  }
+  for (const auto& [edge, count] : directed)
+    if (count != 1 || directed.count({edge.second, edge.first}) != 1) {
+      why << "edge " << edge.first << "-" << edge.second << " is not shared by exactly two faces";
+      return why.str();
+    }
+  const double slack = tol::kHullConvexity * hull.diameter();
+  for (int face = 0; face < f; ++face) {
+    const Vec3 n = hull.face_normal(face);
+    if (std::abs(n.norm() - 1) > 1e-12) return "a face normal is not unit length";
+    const double offset = hull.face_offset(face);
+    Vec3 newell = Vec3::Zero();
+    for (int k = 0; k < hull.face_size(face); ++k) {
+      const Vec3 p = hull.vertex(hull.face_vertex(face, k));
+      if (std::abs(n.dot(p) - offset) > slack) return "a face is not planar";
+      newell += p.cross(hull.vertex(hull.face_vertex(face, (k + 1) % hull.face_size(face))));
+    }
+    if (newell.dot(n) <= 0) return "a face loop is not counter-clockwise seen from outside";
+    for (int i = 0; i < v; ++i)
+      if (n.dot(hull.vertex(i)) - offset > slack) return "the hull is not convex";
+  }
+  return {};
+}
+
+}  // namespace mfz

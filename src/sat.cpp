@@ -1,0 +1,81 @@
+#include "sat.h"
+
+#include "tolerances.h"
+
+namespace mfz {
+
+const char* axis_kind_name(AxisKind kind) {
+  switch (kind) {
+    case AxisKind::face_a: return "face of A";
+    case AxisKind::face_b: return "face of B";
+    case AxisKind::edge_edge: return "edge of A x edge of B";
+  }
+  return "?";
+}
+
+double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, bool& b_along_axis) {
+  const Interval ia = a.project(axis), ib = b.project(axis);
+  const double b_above = ia.max - ib.min;  // overlap if B is pushed out along +axis
+  const double b_below = ib.max - ia.min;  // overlap if B is pushed out along -axis
+  b_along_axis = b_above <= b_below;
+  return b_along_axis ? b_above : b_below;
+}
+
+namespace {
+
+// Tries one candidate axis (unit length). Returns false when it separates.
+bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind kind, int fa, int fb,
+              SatResult& best) {
+  bool b_along_axis = true;
+  const double overlap = overlap_along(a, b, axis, b_along_axis);
+  if (overlap < 0) {
+    best = {true, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
+    return false;
+  }
+  if (overlap < best.depth)
+    best = {false, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
+  return true;
+}
+
+// Calls visit(edge_index, v0, v1) once per undirected edge: the loop step with
+// v0 < v1 stands for the edge, its twin (v1 -> v0) is skipped.
+template <class Visit>
+void for_each_edge(const PosedHull& hull, Visit&& visit) {
+  int index = 0;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    const int n = hull.face_size(f);
+    for (int k = 0; k < n; ++k) {
+      const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
+      if (v0 < v1 && !visit(index++, v0, v1)) return;
+    }
+  }
+}
+
+}  // namespace
+
+SatResult run_sat(const PosedHull& a, const PosedHull& b) {
+  SatResult best;
+  best.depth = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < a.face_count(); ++f)
+    if (!consider(a, b, a.world_face_normal(f), AxisKind::face_a, f, -1, best)) return best;
+  for (int f = 0; f < b.face_count(); ++f)
+    if (!consider(a, b, b.world_face_normal(f), AxisKind::face_b, -1, f, best)) return best;
+  bool separated = false;
+  for_each_edge(a, [&](int ea, int a0, int a1) {
+    const Vec3 edge_a = a.world_vertex(a1) - a.world_vertex(a0);
+    for_each_edge(b, [&](int eb, int b0, int b1) {
+      const Vec3 edge_b = b.world_vertex(b1) - b.world_vertex(b0);
+      const Vec3 axis = edge_a.cross(edge_b);
+      const double length = axis.norm();
+      // Parallel edges span no new axis (a face normal covers it); dividing by
+      // a vanishing length would only amplify rounding.
+      if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+      separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, best);
+      return !separated;
+    });
+    return !separated;
+  });
+  return best;
+}
+
+}  // namespace mfz

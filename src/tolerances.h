@@ -1,0 +1,60 @@
+#pragma once
+/// \file
+/// Every tolerance of the project, in one place. Lengths are relative to the
+/// case's scale L (the larger hull diameter, CONTRACT.md); the harness turns
+/// them into lengths with `CaseScale::length`, which also adds the resolution
+/// of the world frame (see below). Unit vectors and angles use dimensionless
+/// tolerances.
+///
+/// Refinement of the contract, and why: a case placed 1e6 L from the origin
+/// cannot be represented better than one ulp of its coordinates, so every
+/// length tolerance is k * L + kWorldUlps * eps * M, where M is the largest
+/// absolute world coordinate of the case. For cases near the origin M <= L and
+/// the second term is below 1e-13 L, so the tolerance is the contract's k * L.
+
+namespace mfz::tol {
+
+/// Resolution of the world frame, in ulps of the largest coordinate: a rigid
+/// motion (a rotation of 9 products, a translation) and a dot product over
+/// world points each lose a few ulps; 64 covers the chain with room.
+inline constexpr double kWorldUlps = 64.0;
+
+/// |depth| or gap below this (x L) is "touching": either colliding answer passes.
+inline constexpr double kTouching = 1e-9;
+/// Two SAT axes whose overlaps differ by less than this (x L) tie.
+inline constexpr double kTie = 1e-9;
+/// on-surface, pair-consistency, within-both-hulls (x L).
+inline constexpr double kPoint = 1e-9;
+/// depth-exact, normal-realises-depth, negative-penetration, has-contacts (x L).
+inline constexpr double kDepth = 1e-9;
+/// unit-normal: | |n| - 1 | (dimensionless).
+inline constexpr double kUnitNormal = 1e-9;
+
+/// libccd is run on the case rescaled to L = 1 with these absolute settings.
+inline constexpr double kCcdEpaTolerance = 1e-8;
+inline constexpr double kCcdMprTolerance = 1e-8;
+inline constexpr double kCcdDistTolerance = 1e-10;
+/// Bound on libccd's iterations: its default is unbounded and GJK has been seen
+/// to spin forever on fuzz input (CONTRACT.md).
+inline constexpr unsigned long kCcdMaxIterations = 500;
+/// EPA's answers are only as good as its tolerance; comparisons against EPA
+/// use this (x L), two orders above kCcdEpaTolerance for its polytope error.
+inline constexpr double kEpa = 1e-6;
+/// normal-agrees-with-epa: angle between n and EPA's direction (radians).
+inline constexpr double kEpaAngle = 1e-3;
+/// separates: how far past (or short of) depth B is moved (x L). The test is
+/// made on the exact Minkowski difference, so this only has to exceed kDepth.
+inline constexpr double kSeparates = 1e-7;
+
+/// Hull building: a point within this (x L) of a plane through three others
+/// makes the cloud flat (no positive volume).
+inline constexpr double kFlatHull = 1e-9;
+/// Hull validation: every vertex below every face plane within this (x L).
+inline constexpr double kHullConvexity = 1e-9;
+
+/// Generator: two edges whose cross product is shorter than this fraction of
+/// the product of their lengths are parallel; their axis is a face normal's
+/// and is skipped (guarded normalisation).
+inline constexpr double kParallelEdges = 1e-9;
+
+}  // namespace mfz::tol
