@@ -34,9 +34,9 @@ void load_face(const Face& face, ClipPolygon& polygon) {
   for (int k = 0; k < face.hull->face_size(face.index); ++k) polygon.push(face.hull->world_face_point(face.index, k));
 }
 
-void record(ClipTrace* trace, const char* what, const ClipPolygon& polygon) {
+void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
   if (!trace) return;
-  ClipTrace::Step step{what, {}};
+  ClipTrace::Step step{std::move(what), {}};
   for (int k = 0; k < polygon.size(); ++k) step.polygon.push_back(polygon[k]);
   trace->steps.push_back(std::move(step));
 }
@@ -55,7 +55,9 @@ bool clip_to_side_planes(const Face& reference, ClipPolygon& incident, ClipTrace
     const Plane side{normal, normal.dot(hull.world_vertex(v0))};
     if (!clip_to_plane(incident, side, scratch)) return false;
     std::swap(incident, scratch);
-    record(trace, "clipped against a side plane", incident);
+    if (trace)
+      record(trace, "clipped against the plane of face " + std::to_string(adjacent) + " (across edge " +
+                        std::to_string(v0) + "-" + std::to_string(v1) + ")", incident);
   }
   return true;
 }

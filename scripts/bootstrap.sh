@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages manifuzz needs, and only those missing.
+# Run as root (or with sudo available). Nothing is fetched from anywhere but
+# Debian's archive.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ clang            # toolchains: g++ builds all, clang also the fuzzers
+  libclang-rt-14-dev libfuzzer-14-dev    # sanitizer and libFuzzer runtimes for clang
+  libeigen3-dev libccd-dev libqhull-dev  # geometry, the libccd oracle, hulls (qhull_r)
+  librapidcheck-dev libgtest-dev libbenchmark-dev
+  libbullet-dev libode-dev               # peer generators
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "bootstrap: installing ${missing[*]}"
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

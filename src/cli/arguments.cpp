@@ -1,0 +1,54 @@
+#include "cli/arguments.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace mfz::cli {
+
+std::string Arguments::get(const std::string& name, const std::string& fallback) const {
+  const auto found = options.find(name);
+  return found == options.end() ? fallback : found->second;
+}
+
+std::optional<Arguments> parse_arguments(const std::vector<std::string>& words, const std::set<std::string>& valued,
+                                         const std::set<std::string>& switches, std::string& error) {
+  Arguments args;
+  for (size_t i = 0; i < words.size(); ++i) {
+    const std::string& w = words[i];
+    if (w.rfind("--", 0) != 0 || w == "--") {
+      args.positional.push_back(w);
+      continue;
+    }
+    if (switches.count(w)) {
+      args.flags.insert(w);
+    } else if (valued.count(w)) {
+      if (i + 1 >= words.size()) {
+        error = "option " + w + " needs a value";
+        return std::nullopt;
+      }
+      args.options[w] = words[++i];
+    } else {
+      error = "unknown option " + w;
+      return std::nullopt;
+    }
+  }
+  return args;
+}
+
+std::optional<long long> parse_count(const std::string& text, long long low, long long high) {
+  char* end = nullptr;
+  errno = 0;
+  const long long v = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || errno != 0 || v < low || v > high) return std::nullopt;
+  return v;
+}
+
+std::optional<double> parse_seconds(const std::string& text) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v) || v < 0) return std::nullopt;
+  return v;
+}
+
+}  // namespace mfz::cli

@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// The command line's small argument parser: `--name value`, `--flag`, and
+/// positional words, with a one-line error for anything else.
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace mfz::cli {
+
+/// Exit statuses of the contract.
+inline constexpr int kExitClean = 0;
+inline constexpr int kExitViolation = 1;
+inline constexpr int kExitInputError = 2;
+
+struct Arguments {
+  std::map<std::string, std::string> options;  ///< "--seed" -> "7"
+  std::set<std::string> flags;                 ///< "--json"
+  std::vector<std::string> positional;
+
+  std::string get(const std::string& name, const std::string& fallback) const;
+  bool has(const std::string& flag) const { return flags.count(flag) > 0; }
+};
+
+/// Parses `words`; options in `valued` take a value, those in `switches` none.
+/// On error: nullopt and a one-line reason.
+std::optional<Arguments> parse_arguments(const std::vector<std::string>& words, const std::set<std::string>& valued,
+                                         const std::set<std::string>& switches, std::string& error);
+
+/// A whole number in [low, high], or nullopt.
+std::optional<long long> parse_count(const std::string& text, long long low, long long high);
+/// A finite number >= 0, or nullopt.
+std::optional<double> parse_seconds(const std::string& text);
+
+int replay_command(const std::vector<std::string>& words);
+int explain_command(const std::vector<std::string>& words);
+
+}  // namespace mfz::cli

@@ -1,0 +1,134 @@
+// manifuzz explain [--generator G] FILE: one case as a worked example.
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "case_run.h"
+#include "cli/arguments.h"
+#include "clipping_generator.h"
+#include "report.h"
+
+namespace mfz::cli {
+namespace {
+
+void describe_hull(std::ostream& out, char name, const Hull& hull, const Pose& pose) {
+  out << "  hull " << name << ": " << hull.vertex_count() << " vertices, " << hull.face_count() << " faces, "
+      << hull.edge_count() << " edges, diameter " << hull.diameter() << "\n"
+      << "          at " << vec_text(pose.position) << ", orientation (w x y z) " << pose.orientation.w() << " "
+      << pose.orientation.x() << " " << pose.orientation.y() << " " << pose.orientation.z() << "\n";
+}
+
+std::string feature_text(const RankedAxis& axis) {
+  std::ostringstream s;
+  if (axis.kind == AxisKind::face_a) s << "normal of A's face " << axis.feature_a;
+  if (axis.kind == AxisKind::face_b) s << "normal of B's face " << axis.feature_b;
+  if (axis.kind == AxisKind::edge_edge) s << "A's edge " << axis.feature_a << " x B's edge " << axis.feature_b;
+  return s.str();
+}
+
+void describe_sat(std::ostream& out, const CaseRun& run) {
+  out << "\n1. Separating axes (brute force: every face normal and edge pair). The three best:\n";
+  const auto& axes = run.oracles.sat_axes;
+  for (size_t k = 0; k < axes.size() && k < 3; ++k)
+    out << "     overlap " << axes[k].overlap << " along " << vec_text(axes[k].normal) << "  (" << feature_text(axes[k])
+        << ")\n";
+  if (!axes.empty() && axes[0].overlap < 0)
+    out << "   An axis with negative overlap separates the hulls: no collision.\n";
+  if (run.oracles.axis_tie)
+    out << "   Two different axes tie for the least overlap: a correct generator may pick either.\n";
+}
+
+void describe_polygon(std::ostream& out, const std::vector<Vec3>& polygon) {
+  for (const Vec3& p : polygon) out << "        " << vec_text(p) << "\n";
+  if (polygon.empty()) out << "        (empty)\n";
+}
+
+void describe_clipping(std::ostream& out, const CaseRun& run) {
+  ClipTrace trace;
+  mfz_manifold manifold;
+  const mfz_hull a = run.scene.hull_a.view(), b = run.scene.hull_b.view();
+  generate_clipping_manifold(a, run.scene.abi_pose_a(), b, run.scene.abi_pose_b(), manifold, &trace);
+  const SatResult& sat = trace.sat;
+  out << "\n2. The built-in generator's SAT picks " << axis_kind_name(sat.kind) << " (A feature " << sat.feature_a
+      << ", B feature " << sat.feature_b << "):\n     n = " << vec_text(sat.normal) << " (from A to B), "
+      << (sat.separated ? "separating overlap " : "depth ") << sat.depth << "\n";
+  if (sat.separated || trace.face_a < 0) {
+    out << "   No penetration, so no contacts.\n";
+    return;
+  }
+  const Vec3 na = run.scene.pose_a.rotate(run.scene.hull_a.face_normal(trace.face_a));
+  const Vec3 nb = run.scene.pose_b.rotate(run.scene.hull_b.face_normal(trace.face_b));
+  out << "\n3. Significant faces: the vertex furthest along n, and of its faces the one most parallel.\n"
+      << "     A: vertex " << trace.support_a << ", face " << trace.face_a << " with normal " << vec_text(na)
+      << ", |n . normal| = " << std::abs(sat.normal.dot(na)) << "\n"
+      << "     B (along -n): vertex " << trace.support_b << ", face " << trace.face_b << " with normal " << vec_text(nb)
+      << ", |n . normal| = " << std::abs(sat.normal.dot(nb)) << "\n"
+      << "   The more parallel one is the reference face: " << (trace.flipped ? "B's" : "A's") << " face "
+      << (trace.flipped ? trace.face_b : trace.face_a) << "; the incident face is " << (trace.flipped ? "A's" : "B's")
+      << " face " << (trace.flipped ? trace.face_a : trace.face_b) << (trace.flipped ? " (flipped)" : "") << ".\n";
+  out << "\n4. Sutherland-Hodgman clipping of the incident face against the planes of the faces next to the\n"
+      << "   reference face, then removal of the points above the reference plane:\n";
+  for (size_t k = 0; k < trace.steps.size(); ++k) {
+    out << "     step " << k << ": " << trace.steps[k].what << " (" << trace.steps[k].polygon.size() << " points)\n";
+    describe_polygon(out, trace.steps[k].polygon);
+  }
+}
+
+void describe_oracles(std::ostream& out, const CaseRun& run) {
+  const OracleAnswers& o = run.oracles;
+  out << "\n6. Oracles:\n"
+      << "     exact (Minkowski difference A - B): " << (o.exact.colliding ? "depth " : "gap ")
+      << std::abs(o.exact.signed_depth) << ", direction " << vec_text(o.exact.normal)
+      << (o.touching ? "  (touching: within tolerance of zero)" : "") << "\n"
+      << "     libccd GJK: " << (o.ccd.gjk_intersecting ? "intersecting" : "separate") << "\n";
+  if (o.ccd.epa_ok) out << "     libccd EPA: depth " << o.ccd.epa_depth << " along " << vec_text(o.ccd.epa_direction) << "\n";
+  if (o.ccd.mpr_ok) out << "     libccd MPR: depth " << o.ccd.mpr_depth << " along " << vec_text(o.ccd.mpr_direction) << "\n";
+}
+
+}  // namespace
+
+
+int explain_command(const std::vector<std::string>& words) {
+  std::string error;
+  const auto args = parse_arguments(words, {"--generator"}, {}, error);
+  if (!args || args->positional.size() != 1) {
+    std::cerr << "manifuzz explain: " << (args ? "expected exactly one case file" : error)
+              << " (usage: manifuzz explain [--generator G] FILE)\n";
+    return kExitInputError;
+  }
+  const auto generator = Generator::open(args->get("--generator", "builtin"), error);
+  if (!generator) {
+    std::cerr << "manifuzz explain: " << error << "\n";
+    return kExitInputError;
+  }
+  const std::string& file = args->positional[0];
+  const CaseParse parsed = read_case_file(file);
+  std::optional<CaseRun> run;
+  if (parsed.value) run = run_case(*parsed.value, *generator, error);
+  if (!run) {
+    std::cerr << "manifuzz explain: " << (parsed.value ? file + ": " + error : parsed.error) << "\n";
+    return kExitInputError;
+  }
+  std::ostream& out = std::cout;
+  out << "Case " << file << "\n";
+  for (const std::string& line : parsed.value->extensions) out << "  " << line << "\n";
+  describe_hull(out, 'A', run->scene.hull_a, run->scene.pose_a);
+  describe_hull(out, 'B', run->scene.hull_b, run->scene.pose_b);
+  out << "  L (scale of the case, the larger diameter) = " << run->scene.scale
+      << "; tolerances below are in units of L\n";
+  describe_sat(out, *run);
+  if (generator->name() == Generator::builtin().name()) describe_clipping(out, *run);
+  else out << "\n2-4. " << generator->name() << " is a plugin: its steps are not visible, only its answer.\n";
+  out << "\n5. The manifold (" << generator->name() << "):\n" << manifold_text(run->manifold, "     ");
+  describe_oracles(out, *run);
+  out << "\n7. Invariants:\n" << verdict_text(run->verdict, "     ");
+  const InvariantCheck* failed = run->verdict.first_violation();
+  if (run->verdict.refused()) out << "\nVerdict: the generator refused this case.\n";
+  else if (failed)
+    out << "\nVerdict: " << failed->name << " fails: error " << failed->error << " L against a tolerance of "
+        << failed->tolerance << " L (" << failed->detail << ").\n";
+  else out << "\nVerdict: every invariant holds.\n";
+  return failed || run->verdict.refused() ? kExitViolation : kExitClean;
+}
+
+}  // namespace mfz::cli

@@ -1,0 +1,31 @@
+// manifuzz: the command line (CONTRACT.md, "Command line").
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/arguments.h"
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: manifuzz <command> ...\n"
+    "  replay  [--generator G] [--json] FILE...   check the cases in FILE... and print their verdicts\n"
+    "  explain [--generator G] FILE               walk through one case step by step\n"
+    "G is 'builtin' (the default) or a path to a generator plugin .so.\n"
+    "Exit status: 0 nothing found, 1 an invariant was violated, 2 usage, load or input error.\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> words(argv + 1, argv + argc);
+  if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
+    std::cout << kUsage;
+    return words.empty() ? mfz::cli::kExitInputError : mfz::cli::kExitClean;
+  }
+  const std::string command = words[0];
+  words.erase(words.begin());
+  if (command == "replay") return mfz::cli::replay_command(words);
+  if (command == "explain") return mfz::cli::explain_command(words);
+  std::cerr << "manifuzz: unknown command '" << command << "' (try manifuzz --help)\n";
+  return mfz::cli::kExitInputError;
+}

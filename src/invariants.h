@@ -1,0 +1,59 @@
+#pragma once
+/// \file
+/// The contract's invariants, each a named check that measures its error and
+/// compares it with its tolerance. Errors and tolerances are reported in units
+/// of L (unit-normal: dimensionless), so a margin reads the same at any scale.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "manifuzz/abi.h"
+#include "oracles/brute_force_sat.h"
+#include "oracles/libccd_oracle.h"
+#include "oracles/minkowski_difference.h"
+#include "scene.h"
+
+namespace mfz {
+
+enum class CheckStatus { pass, fail, skipped, oracle_disagreement };
+const char* status_name(CheckStatus status);
+
+struct InvariantCheck {
+  std::string name;  ///< the contract's name, e.g. "depth-exact"
+  CheckStatus status = CheckStatus::pass;
+  double error = 0;      ///< measured, in units of L
+  double tolerance = 0;  ///< in units of L
+  std::string detail;    ///< one line: what was measured, or why skipped
+};
+
+/// Everything the checks compare a manifold against, computed once per case.
+struct OracleAnswers {
+  std::optional<MinkowskiDifference> minkowski;
+  ExactDepth exact;
+  std::vector<RankedAxis> sat_axes;  ///< brute-force SAT, best first
+  LibccdAnswer ccd;
+  bool touching = false;  ///< |exact depth or gap| within tol::kTouching
+  bool axis_tie = false;  ///< two distinct minimal axes (tolerances.h kTie)
+  std::string error;      ///< non-empty when the exact oracle failed
+};
+
+OracleAnswers consult_oracles(const Scene& scene);
+
+/// The invariant names, in the contract's order.
+const std::vector<std::string>& invariant_names();
+
+struct Verdict {
+  int32_t generator_status = 0;  ///< non-zero: the generator refused
+  std::vector<InvariantCheck> checks;
+  bool refused() const { return generator_status != 0; }
+  /// The first failed check, or nullptr.
+  const InvariantCheck* first_violation() const;
+  bool has_oracle_disagreement() const;
+};
+
+/// Checks `manifold` (what the generator returned with `status`) against
+/// every invariant. A refusal is reported by `refused()`, and its checks are
+/// skipped.
+Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& manifold);
+
+}  // namespace mfz

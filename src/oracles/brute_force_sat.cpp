@@ -1,0 +1,63 @@
+#include "oracles/brute_force_sat.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "tolerances.h"
+
+namespace mfz {
+
+double directed_overlap(const std::vector<Vec3>& world_a, const std::vector<Vec3>& world_b, const Vec3& n) {
+  double max_a = -std::numeric_limits<double>::infinity(), min_b = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : world_a) max_a = std::max(max_a, n.dot(p));
+  for (const Vec3& p : world_b) min_b = std::min(min_b, n.dot(p));
+  return max_a - min_b;
+}
+
+namespace {
+
+void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, std::vector<RankedAxis>& out) {
+  const double along = directed_overlap(s.world_a, s.world_b, axis);
+  const double against = directed_overlap(s.world_a, s.world_b, -axis);
+  if (along <= against)
+    out.push_back({axis, along, kind, fa, fb});
+  else
+    out.push_back({-axis, against, kind, fa, fb});
+}
+
+}  // namespace
+
+std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
+  std::vector<RankedAxis> axes;
+  for (int f = 0; f < s.hull_a.face_count(); ++f)
+    add_axis(s, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1, axes);
+  for (int f = 0; f < s.hull_b.face_count(); ++f)
+    add_axis(s, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f, axes);
+  const auto& edges_a = s.hull_a.edges();
+  const auto& edges_b = s.hull_b.edges();
+  for (size_t i = 0; i < edges_a.size(); ++i) {
+    const Vec3 ea = s.world_a[edges_a[i].v1] - s.world_a[edges_a[i].v0];
+    for (size_t j = 0; j < edges_b.size(); ++j) {
+      const Vec3 eb = s.world_b[edges_b[j].v1] - s.world_b[edges_b[j].v0];
+      const Vec3 axis = ea.cross(eb);
+      const double length = axis.norm();
+      if (length <= tol::kParallelEdges * ea.norm() * eb.norm()) continue;
+      add_axis(s, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j), axes);
+    }
+  }
+  std::stable_sort(axes.begin(), axes.end(),
+                   [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; });
+  return axes;
+}
+
+bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
+  if (ranked.empty()) return false;
+  // Axes within a few degrees of each other lead to the same manifold kind;
+  // only a genuinely different direction makes a tie.
+  const double same_direction = 0.999;
+  for (size_t k = 1; k < ranked.size() && ranked[k].overlap - ranked[0].overlap <= tie; ++k)
+    if (ranked[k].normal.dot(ranked[0].normal) < same_direction) return true;
+  return false;
+}
+
+}  // namespace mfz

@@ -1,0 +1,100 @@
+#include "oracles/libccd_oracle.h"
+
+#include <ccd/ccd.h>
+
+#include <limits>
+
+#include "tolerances.h"
+
+namespace mfz {
+namespace {
+
+// A posed hull in the rescaled frame: (world - origin) / L.
+struct PointSet {
+  std::vector<Vec3> points;
+  Vec3 centre = Vec3::Zero();
+};
+
+void support(const void* object, const ccd_vec3_t* dir, ccd_vec3_t* out) {
+  const auto& set = *static_cast<const PointSet*>(object);
+  const Vec3 d(ccdVec3X(dir), ccdVec3Y(dir), ccdVec3Z(dir));
+  const Vec3* best = &set.points[0];
+  double best_d = -std::numeric_limits<double>::infinity();
+  for (const Vec3& p : set.points)
+    if (const double v = d.dot(p); v > best_d) best_d = v, best = &p;
+  ccdVec3Set(out, best->x(), best->y(), best->z());
+}
+
+void centre(const void* object, ccd_vec3_t* out) {
+  const auto& set = *static_cast<const PointSet*>(object);
+  ccdVec3Set(out, set.centre.x(), set.centre.y(), set.centre.z());
+}
+
+PointSet rescaled(const std::vector<Vec3>& world, const Vec3& origin, double scale, const Vec3& shift) {
+  PointSet set;
+  for (const Vec3& p : world) {
+    set.points.push_back((p + shift - origin) / scale);
+    set.centre += set.points.back();
+  }
+  set.centre /= static_cast<double>(world.size());
+  return set;
+}
+
+ccd_t settings() {
+  ccd_t ccd;
+  CCD_INIT(&ccd);
+  ccd.support1 = support;
+  ccd.support2 = support;
+  ccd.center1 = centre;
+  ccd.center2 = centre;
+  ccd.max_iterations = tol::kCcdMaxIterations;
+  ccd.epa_tolerance = tol::kCcdEpaTolerance;
+  ccd.mpr_tolerance = tol::kCcdMprTolerance;
+  ccd.dist_tolerance = tol::kCcdDistTolerance;
+  return ccd;
+}
+
+// Translating by A's first vertex is a rigid motion: it keeps libccd's
+// arithmetic near the origin however far the case is placed.
+struct Rescaled {
+  PointSet a, b;
+  Rescaled(const Scene& s, const Vec3& shift_b)
+      : a(rescaled(s.world_a, s.world_a[0], s.scale, Vec3::Zero())),
+        b(rescaled(s.world_b, s.world_a[0], s.scale, shift_b)) {}
+};
+
+Vec3 to_unit(const ccd_vec3_t& v) {
+  const Vec3 d(ccdVec3X(&v), ccdVec3Y(&v), ccdVec3Z(&v));
+  const double n = d.norm();
+  return n > 0 ? Vec3(d / n) : Vec3::UnitZ();
+}
+
+}  // namespace
+
+LibccdAnswer ask_libccd(const Scene& s) {
+  const Rescaled frame(s, Vec3::Zero());
+  const ccd_t ccd = settings();
+  LibccdAnswer answer;
+  answer.gjk_intersecting = ccdGJKIntersect(&frame.a, &frame.b, &ccd) != 0;
+  ccd_real_t depth = 0;
+  ccd_vec3_t dir, pos;
+  if (ccdGJKPenetration(&frame.a, &frame.b, &ccd, &depth, &dir, &pos) == 0) {
+    answer.epa_ok = true;
+    answer.epa_depth = depth * s.scale;
+    answer.epa_direction = to_unit(dir);
+  }
+  if (ccdMPRPenetration(&frame.a, &frame.b, &ccd, &depth, &dir, &pos) == 0) {
+    answer.mpr_ok = true;
+    answer.mpr_depth = depth * s.scale;
+    answer.mpr_direction = to_unit(dir);
+  }
+  return answer;
+}
+
+bool libccd_intersecting(const Scene& s, const Vec3& translation) {
+  const Rescaled frame(s, translation);
+  const ccd_t ccd = settings();
+  return ccdGJKIntersect(&frame.a, &frame.b, &ccd) != 0;
+}
+
+}  // namespace mfz

@@ -1,0 +1,27 @@
+#pragma once
+/// \file
+/// libccd (GJK, EPA, MPR) as a second opinion. Per CONTRACT.md it is called on
+/// the case rescaled to L = 1 (its tolerances are absolute) and with bounded
+/// iterations; its EPA depth is a lower bound, not the truth.
+#include <vector>
+
+#include "scene.h"
+
+namespace mfz {
+
+struct LibccdAnswer {
+  bool gjk_intersecting = false;
+  bool epa_ok = false;     ///< ccdGJKPenetration returned 0
+  double epa_depth = 0;    ///< in the case's units
+  Vec3 epa_direction = Vec3::UnitZ();  ///< unit; moving B along it separates
+  bool mpr_ok = false;
+  double mpr_depth = 0;
+  Vec3 mpr_direction = Vec3::UnitZ();
+};
+
+LibccdAnswer ask_libccd(const Scene& scene);
+
+/// GJK's verdict on the scene with B moved by `translation` (world units).
+bool libccd_intersecting(const Scene& scene, const Vec3& translation);
+
+}  // namespace mfz

@@ -1,0 +1,71 @@
+#include "clip_polygon.h"
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+ClipPolygon unit_square() {
+  ClipPolygon square;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) square.push(p);
+  return square;
+}
+
+TEST(SutherlandHodgman, ClippingASquareThroughTheMiddleKeepsTheInsideHalf) {
+  ClipPolygon out;
+  ASSERT_TRUE(clip_to_plane(unit_square(), Plane{Vec3(1, 0, 0), 0.5}, out));
+  ASSERT_EQ(out.size(), 4);
+  for (int k = 0; k < out.size(); ++k) EXPECT_LE(out[k].x(), 0.5);
+}
+
+TEST(SutherlandHodgman, APointOnThePlaneIsInside) {
+  ClipPolygon out;
+  clip_to_plane(unit_square(), Plane{Vec3(1, 0, 0), 1.0}, out);
+  EXPECT_EQ(out.size(), 4);
+}
+
+TEST(SutherlandHodgman, APlaneMissingThePolygonRemovesEverything) {
+  ClipPolygon out;
+  clip_to_plane(unit_square(), Plane{Vec3(1, 0, 0), -0.1}, out);
+  EXPECT_TRUE(out.empty());
+}
+
+TEST(SutherlandHodgman, CuttingACornerAddsOnePoint) {
+  ClipPolygon out;
+  clip_to_plane(unit_square(), Plane{Vec3(1, 1, 0).normalized(), 1.5 / std::sqrt(2.0)}, out);
+  EXPECT_EQ(out.size(), 5);
+}
+
+TEST(PointRemoval, DropsPointsOutsideWithoutAddingCrossings) {
+  ClipPolygon square = unit_square();
+  remove_points_outside(square, Plane{Vec3(1, 0, 0), 0.5});
+  ASSERT_EQ(square.size(), 2);
+  EXPECT_EQ(square[0].x(), 0);
+  EXPECT_EQ(square[1].x(), 0);
+}
+
+TEST(ClosestPointOnPolygon, InsideProjectsOntoThePlaneOutsideClampsToTheBoundary) {
+  const Vec3 loop[] = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+  EXPECT_VEC_NEAR(closest_point_on_polygon(Vec3(0.3, 0.4, 2), loop, 4, Vec3::UnitZ()), Vec3(0.3, 0.4, 0), 0);
+  EXPECT_VEC_NEAR(closest_point_on_polygon(Vec3(2, 0.5, -1), loop, 4, Vec3::UnitZ()), Vec3(1, 0.5, 0), 0);
+  EXPECT_VEC_NEAR(closest_point_on_polygon(Vec3(-1, -1, 0), loop, 4, Vec3::UnitZ()), Vec3(0, 0, 0), 0);
+}
+
+TEST(PolygonReduction, DropsTheFlattestCornersFirst) {
+  ClipPolygon polygon = unit_square();
+  polygon.push(Vec3(0, 0.5, 0));  // on the square's left edge: no area at all
+  reduce_polygon(polygon, 4);
+  ASSERT_EQ(polygon.size(), 4);
+  for (int k = 0; k < 4; ++k) EXPECT_NE(polygon[k], Vec3(0, 0.5, 0));
+}
+
+TEST(ClipPolygon, RefusesToGrowPastItsCapacity) {
+  ClipPolygon polygon;
+  for (int k = 0; k < kMaxPolygonVertices; ++k) ASSERT_TRUE(polygon.push(Vec3::Zero()));
+  EXPECT_FALSE(polygon.push(Vec3::Zero()));
+}
+
+}  // namespace
+}  // namespace mfz

@@ -1,0 +1,161 @@
+// Hand-computed manifolds of the built-in generator, exact to 1e-12.
+#include "clipping_generator.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+using test::about;
+using test::box_points;
+using test::make_case;
+using test::run_builtin;
+
+constexpr double kExact = 1e-12;
+
+struct Expected {
+  Vec3 on_a, on_b;
+  double penetration;
+};
+
+// Contacts come in the clipper's loop order; compare them as a set.
+void expect_contacts(const mfz_manifold& m, const std::vector<Expected>& expected) {
+  ASSERT_EQ(m.contact_count, static_cast<int>(expected.size()));
+  for (const Expected& e : expected) {
+    bool found = false;
+    for (int i = 0; i < m.contact_count && !found; ++i)
+      found = (to_vec(m.contacts[i].point_on_a) - e.on_a).norm() <= kExact &&
+              (to_vec(m.contacts[i].point_on_b) - e.on_b).norm() <= kExact &&
+              std::abs(m.contacts[i].penetration - e.penetration) <= kExact;
+    EXPECT_TRUE(found) << "no contact with on A " << e.on_a.transpose() << ", on B " << e.on_b.transpose();
+  }
+}
+
+void expect_all_invariants_hold(const CaseRun& run) {
+  const InvariantCheck* failed = run.verdict.first_violation();
+  EXPECT_EQ(failed, nullptr) << failed->name << ": " << failed->detail;
+}
+
+TEST(ClippingGenerator, BoxRestingOnLargerBoxGivesItsFourBottomCorners) {
+  const CaseRun run = run_builtin(make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                            {Vec3(0, 0, 0.9), Quat::Identity()}));
+  const mfz_manifold& m = run.manifold;
+  EXPECT_EQ(m.colliding, 1);
+  EXPECT_VEC_NEAR(to_vec(m.normal), Vec3(0, 0, 1), kExact);
+  EXPECT_NEAR(m.penetration, -0.1, kExact);
+  std::vector<Expected> corners;
+  for (double x : {-0.5, 0.5})
+    for (double y : {-0.5, 0.5}) corners.push_back({Vec3(x, y, 0.5), Vec3(x, y, 0.4), -0.1});
+  expect_contacts(m, corners);
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, BoxTurned45DegreesAboutTheNormalGivesAnOctagon) {
+  const CaseRun run = run_builtin(make_case(box_points(1, 1, 0.5), {}, box_points(1, 1, 0.5),
+                                            {Vec3(0, 0, 0.9), about(Vec3::UnitZ(), M_PI / 4)}));
+  const double s = std::sqrt(2.0) - 1;  // where the turned square's edges cross x = +-1
+  std::vector<Expected> octagon;
+  for (const auto& [x, y] : std::vector<std::pair<double, double>>{
+           {1, s}, {1, -s}, {-1, s}, {-1, -s}, {s, 1}, {-s, 1}, {s, -1}, {-s, -1}})
+    octagon.push_back({Vec3(x, y, 0.5), Vec3(x, y, 0.4), -0.1});
+  EXPECT_NEAR(run.manifold.penetration, -0.1, kExact);
+  expect_contacts(run.manifold, octagon);
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, BoxBelowSlabPointsTheNormalDownAndKeepsContactsOnBothSurfaces) {
+  // A rests under B: n runs from A to B, i.e. downwards.
+  const CaseRun run = run_builtin(make_case(box_points(0.5, 0.5, 0.5), {Vec3(0, 0, 0.9), Quat::Identity()},
+                                            box_points(2, 2, 0.5), {}));
+  EXPECT_VEC_NEAR(to_vec(run.manifold.normal), Vec3(0, 0, -1), kExact);
+  std::vector<Expected> corners;
+  for (double x : {-0.5, 0.5})
+    for (double y : {-0.5, 0.5}) corners.push_back({Vec3(x, y, 0.4), Vec3(x, y, 0.5), -0.1});
+  expect_contacts(run.manifold, corners);
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, TetrahedronTipInAFaceGivesOneContactAtTheTip) {
+  const CaseRun run = run_builtin(test::make_case(
+      box_points(3, 3, 1), {Vec3(0, 0, -1), Quat::Identity()},
+      {{0, 0, 0}, {1, 0, 1}, {-0.5, std::sqrt(0.75), 1}, {-0.5, -std::sqrt(0.75), 1}},
+      {Vec3(0, 0, -0.1), Quat::Identity()}));
+  EXPECT_NEAR(run.manifold.penetration, -0.1, kExact);
+  expect_contacts(run.manifold, {{Vec3(0, 0, 0), Vec3(0, 0, -0.1), -0.1}});
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, TipOfAIntoFaceOfBFlipsReferenceAndIncident) {
+  // A's tip points up into B's bottom face: B's face is the reference face.
+  ClipTrace trace;
+  const CaseFile c = make_case({{0, 0, 0}, {1, 0, -1}, {-0.5, std::sqrt(0.75), -1}, {-0.5, -std::sqrt(0.75), -1}},
+                               {}, box_points(3, 3, 1), {Vec3(0, 0, 0.9), Quat::Identity()});
+  const CaseRun run = run_builtin(c);
+  const mfz_hull a = run.scene.hull_a.view(), b = run.scene.hull_b.view();
+  mfz_manifold m;
+  generate_clipping_manifold(a, run.scene.abi_pose_a(), b, run.scene.abi_pose_b(), m, &trace);
+  EXPECT_TRUE(trace.flipped);
+  EXPECT_VEC_NEAR(to_vec(m.normal), Vec3(0, 0, 1), kExact);
+  expect_contacts(m, {{Vec3(0, 0, 0), Vec3(0, 0, -0.1), -0.1}});
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, EdgeCrossingEdgeFindsTheEdgeAxisAndItsDepth) {
+  const double half_diagonal = std::sqrt(2.0);
+  const CaseRun run = run_builtin(make_case(box_points(1, 1, 1), {Vec3::Zero(), about(Vec3::UnitY(), M_PI / 4)},
+                                            box_points(1, 1, 1),
+                                            {Vec3(0, 0, 2 * half_diagonal - 0.1), about(Vec3::UnitX(), M_PI / 4)}));
+  EXPECT_EQ(run.manifold.colliding, 1);
+  EXPECT_VEC_NEAR(to_vec(run.manifold.normal), Vec3(0, 0, 1), kExact);
+  EXPECT_NEAR(run.manifold.penetration, -0.1, kExact);
+  EXPECT_GE(run.manifold.contact_count, 1);
+}
+
+TEST(ClippingGenerator, SeparatedBoxesAreNotColliding) {
+  const CaseRun run = run_builtin(make_case(box_points(0.5, 0.5, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                            {Vec3(1.5, 0.2, 0), Quat::Identity()}));
+  EXPECT_EQ(run.manifold.colliding, 0);
+  EXPECT_EQ(run.manifold.contact_count, 0);
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, ExactlyTouchingBoxesHaveZeroDepthAndNoContacts) {
+  const CaseRun run = run_builtin(make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                            {Vec3(0.25, 0, 1), Quat::Identity()}));
+  EXPECT_TRUE(run.oracles.touching);
+  EXPECT_EQ(run.manifold.colliding, 1) << "no axis separates strictly: the seed reports a collision";
+  EXPECT_EQ(run.manifold.penetration, 0.0);
+  EXPECT_EQ(run.manifold.contact_count, 0) << "the seed makes no contacts unless p < 0";
+  expect_all_invariants_hold(run);
+}
+
+TEST(ClippingGenerator, JustSeparatedAndJustOverlappingAreEitherSideOfTouching) {
+  for (const double gap : {1e-6, -1e-6}) {
+    const CaseRun run = run_builtin(make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                              {Vec3(0.25, 0, 1 + gap), Quat::Identity()}));
+    EXPECT_EQ(run.manifold.colliding, gap < 0 ? 1 : 0) << "gap " << gap;
+    EXPECT_EQ(run.manifold.contact_count, gap < 0 ? 4 : 0) << "gap " << gap;
+    expect_all_invariants_hold(run);
+  }
+}
+
+TEST(ClippingGenerator, ContactsAreCappedAtTheAbiCapacity) {
+  // A 100-gon prism turned 1.8 degrees on another: the clipped polygon has
+  // 200 points, more than a manifold holds.
+  std::vector<Vec3> prism;
+  for (int k = 0; k < 100; ++k) {
+    const double t = 2 * M_PI * k / 100;
+    prism.emplace_back(std::cos(t), std::sin(t), -0.5);
+    prism.emplace_back(std::cos(t), std::sin(t), 0.5);
+  }
+  const CaseRun run = run_builtin(make_case(prism, {}, prism, {Vec3(0, 0, 0.9), about(Vec3::UnitZ(), M_PI / 100)}));
+  EXPECT_EQ(run.manifold.contact_count, MFZ_MAX_CONTACTS);
+  expect_all_invariants_hold(run);
+}
+
+}  // namespace
+}  // namespace mfz

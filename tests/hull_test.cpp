@@ -1,0 +1,159 @@
+#include "hull.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+using test::box_points;
+
+TEST(HullBuilding, CubeHasEightVerticesAndSixSquareFaces) {
+  const HullBuild built = build_hull(box_points(1, 1, 1));
+  ASSERT_TRUE(built.hull) << built.error;
+  const Hull& h = *built.hull;
+  EXPECT_EQ(h.vertex_count(), 8);
+  EXPECT_EQ(h.face_count(), 6);
+  EXPECT_EQ(h.edge_count(), 12);
+  for (int f = 0; f < h.face_count(); ++f) {
+    EXPECT_EQ(h.face_size(f), 4);
+    EXPECT_NEAR(h.face_normal(f).cwiseAbs().maxCoeff(), 1.0, 1e-15);
+    EXPECT_NEAR(h.face_offset(f), 1.0, 1e-15);
+  }
+  EXPECT_NEAR(h.diameter(), 2 * std::sqrt(3.0), 1e-15);
+  EXPECT_EQ(validate_hull(h), "");
+}
+
+TEST(HullBuilding, FaceLoopsRunCounterClockwiseSeenFromOutside) {
+  const Hull h = *build_hull(box_points(1, 2, 3)).hull;
+  for (int f = 0; f < h.face_count(); ++f) {
+    const Vec3 a = h.vertex(h.face_vertex(f, 0)), b = h.vertex(h.face_vertex(f, 1)), c = h.vertex(h.face_vertex(f, 2));
+    EXPECT_GT((b - a).cross(c - b).dot(h.face_normal(f)), 0) << "face " << f;
+  }
+}
+
+TEST(HullBuilding, EveryEdgeHasALeftAndARightFace) {
+  const Hull h = *build_hull(box_points(1, 1, 1)).hull;
+  for (const HullEdge& e : h.edges()) {
+    EXPECT_GE(e.face_left, 0);
+    EXPECT_GE(e.face_right, 0);
+    EXPECT_NE(e.face_left, e.face_right);
+  }
+}
+
+TEST(HullBuilding, TetrahedronHasFourTriangles) {
+  const HullBuild built = build_hull(test::tetrahedron_points());
+  ASSERT_TRUE(built.hull) << built.error;
+  EXPECT_EQ(built.hull->vertex_count(), 4);
+  EXPECT_EQ(built.hull->face_count(), 4);
+  for (int f = 0; f < 4; ++f) EXPECT_EQ(built.hull->face_size(f), 3);
+}
+
+TEST(HullBuilding, DuplicateAndInteriorPointsAreDropped) {
+  std::vector<Vec3> points = box_points(1, 1, 1);
+  points.push_back(points[0]);
+  points.push_back(points[3]);
+  points.emplace_back(0.1, 0.2, -0.3);  // interior
+  const HullBuild built = build_hull(points);
+  ASSERT_TRUE(built.hull) << built.error;
+  EXPECT_EQ(built.hull->vertex_count(), 8);
+  EXPECT_EQ(built.hull->face_count(), 6);
+}
+
+TEST(HullBuilding, PointsOnEdgesAndFacesAreNotVertices) {
+  std::vector<Vec3> points = box_points(1, 1, 1);
+  points.emplace_back(0, 1, 1);  // middle of an edge
+  points.emplace_back(0, 0, 1);  // centre of a face
+  points.emplace_back(1, 0.25, -0.5);  // inside a face
+  const HullBuild built = build_hull(points);
+  ASSERT_TRUE(built.hull) << built.error;
+  EXPECT_EQ(built.hull->vertex_count(), 8);
+  EXPECT_EQ(built.hull->face_count(), 6);
+  EXPECT_EQ(validate_hull(*built.hull), "");
+}
+
+TEST(HullBuilding, CoplanarTrianglesMergeIntoOneFace) {
+  // An octagonal prism: the caps arrive from Qhull as fans of triangles.
+  std::vector<Vec3> points;
+  for (int k = 0; k < 8; ++k) {
+    const double t = k * M_PI / 4;
+    points.emplace_back(std::cos(t), std::sin(t), -0.5);
+    points.emplace_back(std::cos(t), std::sin(t), 0.5);
+  }
+  const HullBuild built = build_hull(points);
+  ASSERT_TRUE(built.hull) << built.error;
+  EXPECT_EQ(built.hull->face_count(), 10);
+  int caps = 0;
+  for (int f = 0; f < built.hull->face_count(); ++f) caps += built.hull->face_size(f) == 8;
+  EXPECT_EQ(caps, 2);
+}
+
+TEST(HullBuilding, FewerThanFourPointsIsAnError) {
+  const HullBuild built = build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
+  EXPECT_FALSE(built.hull);
+  EXPECT_NE(built.error.find("fewer than four"), std::string::npos) << built.error;
+}
+
+TEST(HullBuilding, NanOrInfIsAnError) {
+  std::vector<Vec3> points = box_points(1, 1, 1);
+  points[2].y() = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(build_hull(points).hull);
+  points[2].y() = std::numeric_limits<double>::infinity();
+  const HullBuild built = build_hull(points);
+  EXPECT_FALSE(built.hull);
+  EXPECT_NE(built.error.find("NaN"), std::string::npos) << built.error;
+}
+
+TEST(HullBuilding, CoplanarCloudIsAnError) {
+  const HullBuild built = build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 0}});
+  EXPECT_FALSE(built.hull);
+  EXPECT_NE(built.error.find("plane"), std::string::npos) << built.error;
+}
+
+TEST(HullBuilding, CloudThinnerThanTheFlatnessToleranceIsAnError) {
+  EXPECT_FALSE(build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1e-12}}).hull);
+  EXPECT_TRUE(build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 1e-6}}).hull);
+}
+
+TEST(HullBuilding, CollinearAndCoincidentPointsAreErrors) {
+  EXPECT_FALSE(build_hull({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}, {3, 3, 3}}).hull);
+  EXPECT_FALSE(build_hull({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}}).hull);
+}
+
+TEST(HullValidation, RejectsAFlippedFaceLoop) {
+  // A tetrahedron with one face's loop reversed: that edge pair no longer matches.
+  const std::vector<Vec3> v = test::tetrahedron_points();
+  const Hull good = *build_hull(v).hull;
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (int f = 0; f < good.face_count(); ++f) {
+    loops.push_back({good.face_vertex(f, 0), good.face_vertex(f, 1), good.face_vertex(f, 2)});
+    normals.push_back(good.face_normal(f));
+  }
+  std::swap(loops[0][1], loops[0][2]);
+  std::vector<Vec3> vertices;
+  for (int i = 0; i < good.vertex_count(); ++i) vertices.push_back(good.vertex(i));
+  EXPECT_NE(validate_hull(Hull::from_faces(vertices, loops, normals)), "");
+}
+
+TEST(HullValidation, RejectsANonConvexVertex) {
+  const Hull good = *build_hull(box_points(1, 1, 1)).hull;
+  std::vector<Vec3> vertices;
+  for (int i = 0; i < good.vertex_count(); ++i) vertices.push_back(good.vertex(i));
+  vertices[0] *= 0.5;  // pull one corner in: its faces are no longer planar
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (int f = 0; f < good.face_count(); ++f) {
+    loops.emplace_back();
+    for (int k = 0; k < good.face_size(f); ++k) loops.back().push_back(good.face_vertex(f, k));
+    normals.push_back(good.face_normal(f));
+  }
+  EXPECT_NE(validate_hull(Hull::from_faces(vertices, loops, normals)), "");
+}
+
+}  // namespace
+}  // namespace mfz

@@ -1,0 +1,194 @@
+// Every invariant is shown to fire on a purpose-built wrong manifold, and to
+// stay quiet on the right one. Each wrong manifold starts from the correct
+// answer for a box resting on a slab and breaks one thing.
+#include "invariants.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+using test::box_points;
+
+class InvariantFires : public ::testing::Test {
+ protected:
+  // B, a unit cube, rests 0.1 deep on the 4 x 4 x 1 slab A: n = +z, four contacts.
+  InvariantFires()
+      : run_(test::run_builtin(test::make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                               {Vec3(0, 0, 0.9), Quat::Identity()}))) {}
+
+  mfz_manifold good() const { return run_.manifold; }
+
+  CheckStatus status_of(const std::string& name, const mfz_manifold& m) const {
+    const Verdict v = check_manifold(run_.scene, run_.oracles, 0, m);
+    for (const InvariantCheck& c : v.checks)
+      if (c.name == name) return c.status;
+    ADD_FAILURE() << "no check named " << name;
+    return CheckStatus::skipped;
+  }
+
+  void expect_fires(const std::string& name, const mfz_manifold& wrong) const {
+    EXPECT_EQ(status_of(name, good()), CheckStatus::pass) << name << " must pass on the right manifold";
+    EXPECT_EQ(status_of(name, wrong), CheckStatus::fail) << name << " must fire on the wrong one";
+  }
+
+  static void shift_contact(mfz_manifold& m, int i, const Vec3& by) {
+    m.contacts[i].point_on_a = to_abi(to_vec(m.contacts[i].point_on_a) + by);
+    m.contacts[i].point_on_b = to_abi(to_vec(m.contacts[i].point_on_b) + by);
+  }
+
+  CaseRun run_;
+};
+
+TEST_F(InvariantFires, FiniteOnANanContact) {
+  mfz_manifold m = good();
+  m.contacts[1].point_on_b.y = std::numeric_limits<double>::quiet_NaN();
+  expect_fires("finite", m);
+}
+
+TEST_F(InvariantFires, FiniteOnAFieldLeftPoisoned) {
+  mfz_manifold m = good();
+  m.contact_count = -1;
+  expect_fires("finite", m);
+  m = good();
+  m.colliding = 7;
+  expect_fires("finite", m);
+}
+
+TEST_F(InvariantFires, UnitNormalOnALongNormal) {
+  mfz_manifold m = good();
+  m.normal.z = 1.001;
+  expect_fires("unit-normal", m);
+}
+
+TEST_F(InvariantFires, NegativePenetrationOnAPositivePenetration) {
+  mfz_manifold m = good();
+  m.penetration = 0.1;
+  expect_fires("negative-penetration", m);
+}
+
+TEST_F(InvariantFires, NegativePenetrationOnAContactDeeperThanTheManifold) {
+  mfz_manifold m = good();
+  m.contacts[0].penetration = -0.2;
+  m.contacts[0].point_on_b.z = m.contacts[0].point_on_a.z - 0.2;
+  expect_fires("negative-penetration", m);
+}
+
+TEST_F(InvariantFires, NegativePenetrationOnAContactWithZeroPenetration) {
+  mfz_manifold m = good();
+  m.contacts[2].penetration = 0;
+  expect_fires("negative-penetration", m);
+}
+
+TEST_F(InvariantFires, PairConsistencyOnSwappedPoints) {
+  mfz_manifold m = good();
+  std::swap(m.contacts[0].point_on_a, m.contacts[0].point_on_b);  // the seed's swapped branch
+  expect_fires("pair-consistency", m);
+}
+
+TEST_F(InvariantFires, OnSurfaceOnAContactSunkIntoBothHulls) {
+  mfz_manifold m = good();
+  shift_contact(m, 0, Vec3(0, 0, 0.05));  // on A now lies 0.05 above A's top: off A's surface
+  expect_fires("on-surface", m);
+}
+
+TEST_F(InvariantFires, WithinBothHullsOnAContactOutsideItsOwnHull) {
+  mfz_manifold m = good();
+  shift_contact(m, 3, Vec3(-0.3, 0, 0));  // beyond B's side by 0.3
+  expect_fires("within-both-hulls", m);
+}
+
+TEST_F(InvariantFires, HasContactsOnAnEmptyManifold) {
+  mfz_manifold m = good();
+  m.contact_count = 0;
+  expect_fires("has-contacts", m);
+}
+
+TEST_F(InvariantFires, AgreesWithGjkOnAMissedCollision) {
+  mfz_manifold m = good();
+  m.colliding = 0;
+  m.contact_count = 0;
+  expect_fires("agrees-with-gjk", m);
+}
+
+TEST_F(InvariantFires, DepthExactOnAShallowDepth) {
+  mfz_manifold m = good();
+  m.penetration = -0.09;
+  expect_fires("depth-exact", m);
+}
+
+TEST_F(InvariantFires, DepthWithinEpaBoundsOnADepthBelowEpas) {
+  mfz_manifold m = good();
+  m.penetration = -0.05;
+  expect_fires("depth-within-epa-bounds", m);
+}
+
+TEST_F(InvariantFires, DepthWithinEpaBoundsOnADepthAboveTheOverlapAlongEpasDirection) {
+  mfz_manifold m = good();
+  m.penetration = -0.2;
+  expect_fires("depth-within-epa-bounds", m);
+}
+
+TEST_F(InvariantFires, NormalAgreesWithEpaOnATiltedNormal) {
+  mfz_manifold m = good();
+  m.normal = to_abi(Vec3(0.1, 0, 1).normalized());
+  expect_fires("normal-agrees-with-epa", m);
+}
+
+TEST_F(InvariantFires, NormalRealisesDepthOnASidewaysNormal) {
+  mfz_manifold m = good();
+  m.normal = {1, 0, 0};
+  expect_fires("normal-realises-depth", m);
+}
+
+TEST_F(InvariantFires, SeparatesOnAnUpsideDownNormal) {
+  mfz_manifold m = good();
+  m.normal = {0, 0, -1};
+  expect_fires("separates", m);
+}
+
+TEST_F(InvariantFires, SeparatesOnADepthTooShortToSeparate) {
+  mfz_manifold m = good();
+  m.penetration = -0.0999;
+  expect_fires("separates", m);
+}
+
+TEST_F(InvariantFires, SeparatesOnADepthLongerThanNeeded) {
+  mfz_manifold m = good();
+  m.penetration = -0.1001;
+  expect_fires("separates", m);
+}
+
+TEST(InvariantVerdict, ARefusalIsNotAPass) {
+  const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
+                                                        {Vec3(0, 0, 1.5), Quat::Identity()}));
+  const Verdict v = check_manifold(run.scene, run.oracles, 3, run.manifold);
+  EXPECT_TRUE(v.refused());
+}
+
+TEST(InvariantVerdict, EveryContractInvariantIsChecked) {
+  const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
+                                                        {Vec3(0, 0, 1.5), Quat::Identity()}));
+  ASSERT_EQ(run.verdict.checks.size(), invariant_names().size());
+  for (size_t k = 0; k < invariant_names().size(); ++k) EXPECT_EQ(run.verdict.checks[k].name, invariant_names()[k]);
+}
+
+TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {
+  for (int colliding : {0, 1}) {
+    const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
+                                                          {Vec3(0.3, 0, 2), Quat::Identity()}));
+    ASSERT_TRUE(run.oracles.touching);
+    mfz_manifold m = run.manifold;
+    m.colliding = colliding;
+    m.contact_count = 0;
+    m.penetration = 0;
+    EXPECT_EQ(check_manifold(run.scene, run.oracles, 0, m).first_violation(), nullptr) << "colliding " << colliding;
+  }
+}
+
+}  // namespace
+}  // namespace mfz

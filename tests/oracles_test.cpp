@@ -1,0 +1,104 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "oracles/brute_force_sat.h"
+#include "oracles/libccd_oracle.h"
+#include "oracles/minkowski_difference.h"
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+using test::box_points;
+
+Scene scene_of(const CaseFile& c) {
+  SceneBuild built = make_scene(c);
+  if (!built.scene) {
+    ADD_FAILURE() << built.error;
+    std::abort();
+  }
+  return std::move(*built.scene);
+}
+
+Scene box_on_slab(const Vec3& offset = Vec3::Zero()) {
+  return scene_of(test::make_case(box_points(2, 2, 0.5), {offset, Quat::Identity()}, box_points(0.5, 0.5, 0.5),
+                                  {offset + Vec3(0, 0, 0.9), Quat::Identity()}));
+}
+
+TEST(MinkowskiOracle, DepthIsTheDistanceFromTheOriginToTheBoundary) {
+  const Scene s = box_on_slab();
+  std::string error;
+  const auto md = MinkowskiDifference::build(s.world_a, s.world_b, error);
+  ASSERT_TRUE(md) << error;
+  const ExactDepth exact = md->at_origin();
+  EXPECT_TRUE(exact.colliding);
+  EXPECT_NEAR(exact.signed_depth, 0.1, 1e-14);
+  EXPECT_VEC_NEAR(exact.normal, Vec3(0, 0, 1), 1e-14);
+}
+
+TEST(MinkowskiOracle, GapIsTheDistanceBetweenTheHullsCornerToCorner) {
+  const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                           {Vec3(1.3, 1.4, 0), Quat::Identity()}));
+  std::string error;
+  const ExactDepth exact = MinkowskiDifference::build(s.world_a, s.world_b, error)->at_origin();
+  EXPECT_FALSE(exact.colliding);
+  EXPECT_NEAR(exact.signed_depth, -std::hypot(0.3, 0.4), 1e-14);
+  EXPECT_VEC_NEAR(exact.normal, Vec3(0.6, 0.8, 0), 1e-14);
+}
+
+TEST(MinkowskiOracle, MovingBByTheDepthAlongTheNormalLeavesThemTouching) {
+  const Scene s = box_on_slab();
+  std::string error;
+  const auto md = MinkowskiDifference::build(s.world_a, s.world_b, error);
+  EXPECT_GT(md->depth_of(Vec3(0, 0, 0.0999)), 0);
+  EXPECT_NEAR(md->depth_of(Vec3(0, 0, 0.1)), 0, 1e-15);
+  EXPECT_LT(md->depth_of(Vec3(0, 0, 0.1001)), 0);
+}
+
+TEST(BruteForceSat, RanksTheFaceAxisFirstWithItsOverlap) {
+  const auto axes = rank_sat_axes(box_on_slab());
+  ASSERT_FALSE(axes.empty());
+  EXPECT_NEAR(axes[0].overlap, 0.1, 1e-15);
+  EXPECT_VEC_NEAR(axes[0].normal, Vec3(0, 0, 1), 1e-15);
+  EXPECT_FALSE(has_axis_tie(axes, 1e-9));
+}
+
+TEST(BruteForceSat, CoincidentCubesTieBetweenOppositeAxes) {
+  const Scene s = scene_of(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1), {}));
+  EXPECT_TRUE(has_axis_tie(rank_sat_axes(s), 1e-9));
+}
+
+TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {
+  const LibccdAnswer answer = ask_libccd(box_on_slab());
+  EXPECT_TRUE(answer.gjk_intersecting);
+  ASSERT_TRUE(answer.epa_ok);
+  EXPECT_NEAR(answer.epa_depth, 0.1, 1e-7);
+  EXPECT_VEC_NEAR(answer.epa_direction, Vec3(0, 0, 1), 1e-6);
+  ASSERT_TRUE(answer.mpr_ok);
+  EXPECT_NEAR(answer.mpr_depth, 0.1, 1e-6);
+}
+
+TEST(LibccdOracle, AnswersTheSameFarFromTheOriginAndAtAnyScale) {
+  const LibccdAnswer far = ask_libccd(box_on_slab(Vec3(1e6, -2e6, 3e5)));
+  ASSERT_TRUE(far.epa_ok);
+  EXPECT_NEAR(far.epa_depth, 0.1, 1e-6);
+  const double s = 1e-4;
+  const Scene tiny = scene_of(test::make_case(box_points(2 * s, 2 * s, 0.5 * s), {}, box_points(0.5 * s, 0.5 * s, 0.5 * s),
+                                              {Vec3(0, 0, 0.9 * s), Quat::Identity()}));
+  const LibccdAnswer small = ask_libccd(tiny);
+  ASSERT_TRUE(small.epa_ok);
+  EXPECT_NEAR(small.epa_depth / s, 0.1, 1e-6);
+}
+
+TEST(LibccdOracle, SeparatedHullsDoNotIntersect) {
+  const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                           {Vec3(1.5, 0, 0), Quat::Identity()}));
+  const LibccdAnswer answer = ask_libccd(s);
+  EXPECT_FALSE(answer.gjk_intersecting);
+  EXPECT_FALSE(answer.epa_ok);
+  EXPECT_TRUE(libccd_intersecting(s, Vec3(-0.6, 0, 0)));
+}
+
+}  // namespace
+}  // namespace mfz

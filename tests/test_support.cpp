@@ -1,0 +1,38 @@
+#include "test_support.h"
+
+namespace mfz::test {
+
+std::vector<Vec3> box_points(double hx, double hy, double hz) {
+  std::vector<Vec3> points;
+  for (double sx : {-1.0, 1.0})
+    for (double sy : {-1.0, 1.0})
+      for (double sz : {-1.0, 1.0}) points.emplace_back(sx * hx, sy * hy, sz * hz);
+  return points;
+}
+
+std::vector<Vec3> tetrahedron_points() { return {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}; }
+
+Quat about(const Vec3& axis, double angle) { return Quat(Eigen::AngleAxisd(angle, axis.normalized())); }
+
+CaseFile make_case(std::vector<Vec3> a, const Pose& pose_a, std::vector<Vec3> b, const Pose& pose_b) {
+  CaseFile c;
+  c.points_a = std::move(a);
+  c.points_b = std::move(b);
+  c.pose_a = pose_a;
+  c.pose_b = pose_b;
+  return c;
+}
+
+CaseRun run_builtin(const CaseFile& c) {
+  std::string error;
+  auto run = run_case(c, Generator::builtin(), error);
+  if (!run) {
+    ADD_FAILURE() << "input error: " << error;
+    std::abort();
+  }
+  return std::move(*run);
+}
+
+std::string corpus_path(const std::string& name) { return std::string(MANIFUZZ_SOURCE_DIR) + "/corpus/" + name; }
+
+}  // namespace mfz::test
