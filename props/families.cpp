@@ -1,0 +1,333 @@
+#include "families.h"
+
+#include <cmath>
+
+#include "hull.h"
+
+namespace mfz::props {
+namespace {
+
+// ---- small pickers: every value an integer that shrinks towards 0 ----
+
+int pick(int low, int high) { return *rc::gen::inRange(low, high + 1); }
+
+// A number with few digits in [-1, 1].
+double digits(int resolution = 100) { return pick(-resolution, resolution) / static_cast<double>(resolution); }
+
+Vec3 digit_vector(int resolution = 100) { return {digits(resolution), digits(resolution), digits(resolution)}; }
+
+// A rotation that shrinks towards the identity: a whole number of degrees
+// about an axis with small integer coordinates.
+Quat any_rotation() {
+  const int degrees = pick(0, 359);
+  const Vec3 axis(pick(-3, 3), pick(-3, 3), pick(-3, 3));
+  if (degrees == 0 || axis.isZero()) return Quat::Identity();
+  return Quat(Eigen::AngleAxisd(degrees * M_PI / 180, axis.normalized()));
+}
+
+// The rotation taking unit vector `from` onto unit vector `to`.
+Quat rotation_between(const Vec3& from, const Vec3& to) { return Quat::FromTwoVectors(from, to); }
+
+Vec3 any_perpendicular(const Vec3& n) {
+  const Vec3 helper = std::abs(n.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY();
+  return n.cross(helper).normalized();
+}
+
+std::vector<Vec3> box_corners(double hx, double hy, double hz) {
+  std::vector<Vec3> points;
+  for (double sx : {-1.0, 1.0})
+    for (double sy : {-1.0, 1.0})
+      for (double sz : {-1.0, 1.0}) points.emplace_back(sx * hx, sy * hy, sz * hz);
+  return points;
+}
+
+std::vector<Vec3> regular_polygon(int sides, double radius, double z) {
+  std::vector<Vec3> ring;
+  for (int k = 0; k < sides; ++k) {
+    const double t = 2 * M_PI * k / sides;
+    ring.emplace_back(radius * std::cos(t), radius * std::sin(t), z);
+  }
+  return ring;
+}
+
+std::vector<Vec3> cloud(int resolution) {
+  std::vector<Vec3> points;
+  const int count = pick(4, 64);
+  for (int k = 0; k < count; ++k) points.push_back(digit_vector(resolution));
+  return points;
+}
+
+std::vector<Vec3> on_sphere(const Vec3& radii) {
+  std::vector<Vec3> points;
+  const int count = pick(4, 64);
+  for (int k = 0; k < count; ++k) {
+    const Vec3 d = digit_vector();
+    points.push_back(d.isZero() ? Vec3(radii.x(), 0, 0) : Vec3(d.normalized().cwiseProduct(radii)));
+  }
+  return points;
+}
+
+std::vector<Vec3> prism(int sides, double height, double top_radius) {
+  std::vector<Vec3> points = regular_polygon(sides, 1, -height / 2);
+  const std::vector<Vec3> top = regular_polygon(sides, top_radius, height / 2);
+  points.insert(points.end(), top.begin(), top.end());
+  return points;
+}
+
+// ---- hull families ----
+
+using Family = std::vector<Vec3> (*)();
+
+const std::vector<std::pair<std::string, Family>>& families() {
+  static const std::vector<std::pair<std::string, Family>> all = {
+      {"cube", [] { return box_corners(0.5, 0.5, 0.5); }},
+      {"box", [] { return box_corners(pick(1, 10) / 10.0, pick(1, 10) / 10.0, pick(1, 10) / 10.0); }},
+      {"slab", [] { return box_corners(0.5, pick(5, 10) / 20.0, 0.5e-3); }},
+      {"needle", [] { return box_corners(0.5e-3, 0.5e-3, 0.5); }},
+      {"anisotropic-box", [] { return box_corners(pick(1, 100) / 100.0, pick(1, 100) / 100.0, pick(1, 100) / 100.0); }},
+      {"tetrahedron", [] { return std::vector<Vec3>{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}; }},
+      {"random-tetrahedron", [] { return std::vector<Vec3>{digit_vector(), digit_vector(), digit_vector(), digit_vector()}; }},
+      {"sphere-cloud", [] { return on_sphere(Vec3(1, 1, 1)); }},
+      {"box-cloud", [] { return cloud(100); }},
+      {"ellipsoid-cloud", [] { return on_sphere(Vec3(1, pick(1, 10) / 10.0, pick(1, 10) / 10.0)); }},
+      {"prism", [] { return prism(pick(3, 64), pick(1, 20) / 10.0, 1); }},
+      {"cylinder", [] { return prism(pick(24, 64), pick(1, 20) / 10.0, 1); }},
+      {"pyramid", [] {
+         std::vector<Vec3> points = regular_polygon(pick(3, 64), 1, 0);
+         points.emplace_back(0, 0, pick(1, 20) / 10.0);
+         return points;
+       }},
+      {"frustum", [] { return prism(pick(3, 64), pick(1, 20) / 10.0, pick(1, 20) / 10.0); }},
+      {"duplicates", [] {
+         std::vector<Vec3> points = cloud(10);
+         const size_t original = points.size();
+         for (size_t k = 0; k < original; ++k)
+           for (int copies = pick(0, 2); copies > 0; --copies) points.push_back(points[k]);
+         return points;
+       }},
+      {"near-coplanar", [] {
+         // A cube with one corner pushed out by 10^-k: its three faces become
+         // pairs of triangles a hair from coplanar.
+         std::vector<Vec3> points = box_corners(0.5, 0.5, 0.5);
+         static const double offsets[] = {1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
+         points[7] += offsets[pick(0, 4)] * Vec3(1, 1, 1);
+         return points;
+       }},
+      {"coplanar-grid", [] {
+         // A cube with a grid of points on every face: Qhull's triangles
+         // must merge back into six squares.
+         std::vector<Vec3> points = box_corners(0.5, 0.5, 0.5);
+         const int n = pick(1, 4);
+         for (int axis = 0; axis < 3; ++axis)
+           for (double side : {-0.5, 0.5})
+             for (int i = 0; i <= n; ++i)
+               for (int j = 0; j <= n; ++j) {
+                 Vec3 p;
+                 p[axis] = side;
+                 p[(axis + 1) % 3] = -0.5 + static_cast<double>(i) / n;
+                 p[(axis + 2) % 3] = -0.5 + static_cast<double>(j) / n;
+                 points.push_back(p);
+               }
+         return points;
+       }},
+  };
+  return all;
+}
+
+// ---- placements ----
+
+struct Placed {
+  Hull hull;
+  Pose pose;
+  std::vector<Vec3> world() const {
+    std::vector<Vec3> out;
+    for (int i = 0; i < hull.vertex_count(); ++i) out.push_back(pose.to_world(hull.vertex(i)));
+    return out;
+  }
+};
+
+double support(const std::vector<Vec3>& points, const Vec3& d) {
+  double best = -INFINITY;
+  for (const Vec3& p : points) best = std::max(best, d.dot(p));
+  return best;
+}
+
+Vec3 centroid(const Hull& h) {
+  Vec3 c = Vec3::Zero();
+  for (int i = 0; i < h.vertex_count(); ++i) c += h.vertex(i);
+  return c / h.vertex_count();
+}
+
+// Outward direction of a feature of a hull in local space, by kind.
+Vec3 face_direction(const Hull& h, int index) { return h.face_normal(index % h.face_count()); }
+Vec3 edge_direction(const Hull& h, int index) {
+  const HullEdge& e = h.edges()[index % h.edge_count()];
+  return (h.face_normal(e.face_left) + h.face_normal(e.face_right)).normalized();
+}
+Vec3 vertex_direction(const Hull& h, int index) {
+  const Vec3 d = h.vertex(index % h.vertex_count()) - centroid(h);
+  return d.isZero() ? Vec3::UnitZ() : Vec3(d.normalized());
+}
+
+const std::vector<Quat>& cube_symmetries() {
+  static const std::vector<Quat> all = [] {
+    std::vector<Quat> out;
+    const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto& perm : perms)
+      for (int signs = 0; signs < 8; ++signs) {
+        Mat3 m = Mat3::Zero();
+        for (int r = 0; r < 3; ++r) m(r, perm[r]) = (signs >> r & 1) ? -1 : 1;
+        if (m.determinant() > 0) out.emplace_back(m);
+      }
+    return out;
+  }();
+  return all;
+}
+
+const char* const kTiltNames[] = {"exact", "1e-15", "1e-12", "1e-9", "1e-6", "1e-3", "degrees"};
+const double kTilts[] = {0, 1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
+
+// A small rotation about an axis perpendicular to `n`.
+Quat tilt_about(const Vec3& n, std::string& name) {
+  const int which = pick(0, 6);
+  name = kTiltNames[which];
+  const double angle = which < 6 ? kTilts[which] : pick(1, 10) * M_PI / 180;
+  if (angle == 0) return Quat::Identity();
+  const Vec3 axis = Quat(Eigen::AngleAxisd(pick(0, 359) * M_PI / 180, n)) * any_perpendicular(n);
+  return Quat(Eigen::AngleAxisd(angle, axis));
+}
+
+// How far B reaches into A along the placement direction, in units of the
+// smaller hull's size.
+double any_overlap(double small_size, std::string& name) {
+  switch (pick(0, 4)) {
+    case 0: name = "shallow"; return pick(1, 50) / 1000.0 * small_size;
+    case 1: name = "touching"; return 0;
+    case 2: name = "one-ulp"; return std::nextafter(small_size, INFINITY) - small_size;
+    case 3: name = "separated"; return -pick(1, 1000) * 1e-9 * small_size;
+    default: name = "deep"; return pick(50, 150) / 100.0 * small_size;
+  }
+}
+
+// Places B so that along `d` (world, from A to B) it reaches `overlap` into A,
+// with a sideways offset.
+void place_along(const Placed& a, Placed& b, const Vec3& d, double overlap, double size) {
+  b.pose.position = Vec3::Zero();
+  const double reach_a = support(a.world(), d);
+  const double reach_b = -support(b.world(), -d);
+  const Vec3 side = any_perpendicular(d);
+  const Vec3 other = d.cross(side);
+  b.pose.position = (reach_a - reach_b - overlap) * d + size * (digits(10) * 0.3 * side + digits(10) * 0.3 * other);
+}
+
+}  // namespace
+
+const std::vector<std::string>& hull_family_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const auto& [name, make] : families()) out.push_back(name);
+    return out;
+  }();
+  return names;
+}
+
+const std::vector<std::string>& placement_names() {
+  static const std::vector<std::string> names = {"face-on-face", "cube-symmetry", "edge-edge",
+                                                 "vertex-face",  "corner-corner", "random"};
+  return names;
+}
+
+rc::Gen<std::vector<Vec3>> hull_points(const std::string& family) {
+  for (const auto& [name, make] : families())
+    if (name == family) return rc::gen::exec(make);
+  throw std::invalid_argument("unknown hull family " + family);
+}
+
+namespace {
+
+void scale_points(std::vector<Vec3>& points, double s) {
+  for (Vec3& p : points) p *= s;
+}
+
+// Orients and places B against A by the named placement.
+void place(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out) {
+  a.pose.orientation = any_rotation();
+  const double size = std::min(a.hull.diameter(), b.hull.diameter());
+  const double overlap = any_overlap(size / 2, out.overlap);
+  Vec3 d;  // world direction from A to B along which they meet
+  Vec3 feature_b;  // B's feature direction (local), to turn towards -d
+  if (placement == "random") {
+    b.pose.orientation = any_rotation();
+    const Vec3 dir = digit_vector(10);
+    d = dir.isZero() ? Vec3::UnitZ() : Vec3(dir.normalized());
+    out.tilt = "exact";
+    place_along(a, b, d, overlap, size);
+    return;
+  }
+  if (placement == "cube-symmetry") {
+    a.pose.orientation = Quat::Identity();
+    d = Vec3::UnitZ();
+    b.pose.orientation = tilt_about(d, out.tilt) * cube_symmetries()[pick(0, 23)];
+    place_along(a, b, d, overlap, size);
+    return;
+  }
+  const int fa = pick(0, 63), fb = pick(0, 63);
+  if (placement == "face-on-face") {
+    d = a.pose.rotate(face_direction(a.hull, fa));
+    feature_b = face_direction(b.hull, fb);
+  } else if (placement == "edge-edge") {
+    d = a.pose.rotate(edge_direction(a.hull, fa));
+    feature_b = edge_direction(b.hull, fb);
+  } else if (placement == "vertex-face") {
+    d = a.pose.rotate(face_direction(a.hull, fa));
+    feature_b = vertex_direction(b.hull, fb);
+  } else {  // corner-corner
+    d = a.pose.rotate(vertex_direction(a.hull, fa));
+    feature_b = vertex_direction(b.hull, fb);
+  }
+  const Quat spin(Eigen::AngleAxisd(pick(0, 359) * M_PI / 180, d));
+  b.pose.orientation = tilt_about(d, out.tilt) * spin * rotation_between(feature_b, -d);
+  place_along(a, b, d, overlap, size);
+}
+
+}  // namespace
+
+rc::Gen<GeneratedCase> any_case() {
+  return rc::gen::exec([] {
+    GeneratedCase out;
+    const auto& names = hull_family_names();
+    out.hull_a = *rc::gen::elementOf(names);
+    out.hull_b = *rc::gen::elementOf(names);
+    std::vector<Vec3> points_a = *hull_points(out.hull_a);
+    std::vector<Vec3> points_b = *hull_points(out.hull_b);
+    static const char* const scales[] = {"unit", "small", "large", "ratio"};
+    static const double factors_a[] = {1, 1e-3, 1e4, 1}, factors_b[] = {1, 1e-3, 1e4, 1e-3};
+    const int s = pick(0, 3);
+    out.scale = scales[s];
+    scale_points(points_a, factors_a[s]);
+    scale_points(points_b, factors_b[s]);
+    out.file.points_a = points_a;
+    out.file.points_b = points_b;
+    HullBuild built_a = build_hull(points_a), built_b = build_hull(points_b);
+    out.placement = *rc::gen::elementOf(placement_names());
+    if (!built_a.hull || !built_b.hull) {
+      out.overlap = out.tilt = out.frame = "invalid";
+      return out;  // the property sees an input error and discards the case
+    }
+    Placed a{std::move(*built_a.hull), {}}, b{std::move(*built_b.hull), {}};
+    place(out.placement, a, b, out);
+    static const char* const frames[] = {"origin", "far-1e3", "far-1e4", "far-1e5", "far-1e6"};
+    const int f = pick(0, 4);
+    out.frame = frames[f];
+    const Vec3 far = f == 0 ? Vec3::Zero() : Vec3(1, -0.5, 0.25) * std::pow(10.0, 2 + f) * a.hull.diameter();
+    out.file.pose_a = {a.pose.position + far, a.pose.orientation};
+    out.file.pose_b = {b.pose.position + far, b.pose.orientation};
+    out.file.extensions = {"note families: A " + out.hull_a + ", B " + out.hull_b + ", " + out.placement + ", " +
+                           out.overlap + ", tilt " + out.tilt + ", " + out.frame + ", scale " + out.scale};
+    return out;
+  });
+}
+
+void showValue(const GeneratedCase& c, std::ostream& os) { os << "\n" << format_case(c.file); }
+
+}  // namespace mfz::props

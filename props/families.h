@@ -1,0 +1,40 @@
+#pragma once
+/// \file
+/// The case families: RapidCheck generators of hulls and poses, each named,
+/// each shrinking towards small round cases (fewer points, coordinates with
+/// few digits, identity rotation, unit size, the origin). Shared by the
+/// properties, `manifuzz check` and the fuzzer's decoder.
+#include <rapidcheck.h>
+
+#include <ostream>
+#include <string>
+
+#include "case_file.h"
+
+namespace mfz::props {
+
+/// A generated case and the names of the families it came from.
+struct GeneratedCase {
+  CaseFile file;
+  std::string hull_a, hull_b;  ///< hull family of each
+  std::string placement;       ///< face-on-face, edge-edge, ...
+  std::string overlap;         ///< shallow, touching, one-ulp, separated, deep
+  std::string tilt;            ///< exact, 1e-15, ..., degrees
+  std::string frame;           ///< origin, far-1e3 ... far-1e6
+  std::string scale;           ///< unit, small, large, ratio
+};
+
+/// Every hull family's name, in the order the generator picks them from.
+const std::vector<std::string>& hull_family_names();
+/// Every placement family's name.
+const std::vector<std::string>& placement_names();
+
+/// Points of one hull family (local space, size about 1).
+rc::Gen<std::vector<Vec3>> hull_points(const std::string& family);
+/// A whole case: two hulls, each from any family, placed by any placement.
+rc::Gen<GeneratedCase> any_case();
+
+/// RapidCheck prints a counterexample with this: the case file itself.
+void showValue(const GeneratedCase& c, std::ostream& os);
+
+}  // namespace mfz::props
