@@ -319,7 +319,7 @@ rc::Gen<GeneratedCase> any_case() {
     static const char* const frames[] = {"origin", "far-1e3", "far-1e4", "far-1e5", "far-1e6"};
     const int f = pick(0, 4);
     out.frame = frames[f];
-    const Vec3 far = f == 0 ? Vec3::Zero() : Vec3(1, -0.5, 0.25) * std::pow(10.0, 2 + f) * a.hull.diameter();
+    const Vec3 far = f == 0 ? Vec3(Vec3::Zero()) : Vec3(Vec3(1, -0.5, 0.25) * std::pow(10.0, 2 + f) * a.hull.diameter());
     out.file.pose_a = {a.pose.position + far, a.pose.orientation};
     out.file.pose_b = {b.pose.position + far, b.pose.orientation};
     out.file.extensions = {"note families: A " + out.hull_a + ", B " + out.hull_b + ", " + out.placement + ", " +

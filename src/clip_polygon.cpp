@@ -2,6 +2,8 @@
 
 #include <limits>
 
+#include "closest_point.h"
+
 namespace mfz {
 
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out) {
@@ -32,18 +34,6 @@ void remove_points_outside(ClipPolygon& polygon, const Plane& plane) {
     if (plane.signed_distance(polygon[k]) > 0) polygon.erase(k);
 }
 
-namespace {
-
-Vec3 closest_point_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double length_sq = ab.squaredNorm();
-  if (length_sq == 0) return a;  // a degenerate edge is its end point
-  double t = (p - a).dot(ab) / length_sq;
-  t = t < 0 ? 0 : (t > 1 ? 1 : t);
-  return a + t * ab;
-}
-
-}  // namespace
 
 Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal) {
   const Vec3 projected = p - normal.dot(p - loop[0]) * normal;
@@ -58,7 +48,7 @@ Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const 
   Vec3 best = loop[0];
   double best_sq = std::numeric_limits<double>::infinity();
   for (int k = 0; k < count; ++k) {
-    const Vec3 c = closest_point_on_segment(p, loop[k], loop[(k + 1) % count]);
+    const Vec3 c = closest_on_segment(p, loop[k], loop[(k + 1) % count]);
     const double d = (c - p).squaredNorm();
     if (d < best_sq) best_sq = d, best = c;
   }

@@ -23,17 +23,6 @@ int significant_face(const PosedHull& hull, const Vec3& direction, int& support)
 
 namespace {
 
-struct Face {
-  const PosedHull* hull = nullptr;
-  int index = -1;
-  Vec3 normal;
-};
-
-void load_face(const Face& face, ClipPolygon& polygon) {
-  polygon.clear();
-  for (int k = 0; k < face.hull->face_size(face.index); ++k) polygon.push(face.hull->world_face_point(face.index, k));
-}
-
 void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
   if (!trace) return;
   ClipTrace::Step step{std::move(what), {}};
@@ -41,9 +30,75 @@ void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
   trace->steps.push_back(std::move(step));
 }
 
+}  // namespace
+
+void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
+  out.clear();
+  for (int k = 0; k < hull.face_size(face); ++k) out.push(hull.world_face_point(face, k));
+}
+
+namespace {
+
+/// Faces whose unit normals' dot product exceeds this are one plane for F2
+/// (an angle below 1.4e-6 rad); a triangulated face's triangles share it exactly.
+constexpr double kCoplanarDot = 1 - 1e-12;
+/// Fixed capacity of a coplanar patch: faces, and boundary edges.
+constexpr int kMaxPatchFaces = 256;
+constexpr int kMaxPatchEdges = 512;
+
+bool contains(const int* items, int count, int item) {
+  for (int i = 0; i < count; ++i)
+    if (items[i] == item) return true;
+  return false;
+}
+
+// Grows the patch breadth first across edges to faces of the same plane.
+int gather_patch(const PosedHull& hull, int face, int* members) {
+  const Vec3 normal = hull.world_face_normal(face);
+  int count = 1;
+  members[0] = face;
+  for (int i = 0; i < count; ++i) {
+    const int f = members[i], n = hull.face_size(f);
+    for (int k = 0; k < n; ++k) {
+      const int g = hull.face_across(hull.face_vertex(f, k), hull.face_vertex(f, (k + 1) % n));
+      if (g < 0 || count == kMaxPatchFaces || contains(members, count, g)) continue;
+      if (hull.world_face_normal(g).dot(normal) >= kCoplanarDot) members[count++] = g;
+    }
+  }
+  return count;
+}
+
+}  // namespace
+
+void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
+  int members[kMaxPatchFaces];
+  const int count = gather_patch(hull, face, members);
+  if (count == 1) return face_loop(hull, face, out);
+  // The patch's boundary: the loop steps whose other side is outside it.
+  int from[kMaxPatchEdges], to[kMaxPatchEdges], edges = 0;
+  for (int i = 0; i < count; ++i) {
+    const int f = members[i], n = hull.face_size(f);
+    for (int k = 0; k < n && edges < kMaxPatchEdges; ++k) {
+      const int a = hull.face_vertex(f, k), b = hull.face_vertex(f, (k + 1) % n);
+      if (!contains(members, count, hull.face_across(a, b))) from[edges] = a, to[edges++] = b;
+    }
+  }
+  // Chain the steps into one loop; it keeps the faces' counter-clockwise turn.
+  out.clear();
+  int current = 0;
+  for (int step = 0; step < edges; ++step) {
+    out.push(hull.world_vertex(from[current]));
+    int next = -1;
+    for (int j = 0; j < edges && next < 0; ++j)
+      if (from[j] == to[current]) next = j;
+    if (next <= 0) break;  // closed (or, on a malformed hull, broken)
+    current = next;
+  }
+}
+
 // The seed clips against "the adjacent faces" of the reference face: the plane
 // of the face across each of its edges, kept side inward.
-bool clip_to_side_planes(const Face& reference, ClipPolygon& incident, ClipTrace* trace) {
+bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
   const PosedHull& hull = *reference.hull;
   const int n = hull.face_size(reference.index);
   ClipPolygon scratch;
@@ -62,6 +117,34 @@ bool clip_to_side_planes(const Face& reference, ClipPolygon& incident, ClipTrace
   return true;
 }
 
+// F1: the clipping method's contact region is the prism over the reference
+// face. The adjacent faces' planes only bound it where those faces stand
+// perpendicular; where they slope inwards the region reaches past the face and
+// point_on_a leaves the hull.
+bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+  const ClipPolygon& loop = *reference.polygon;
+  const int n = loop.size();
+  ClipPolygon scratch;
+  for (int k = 0; k < n; ++k) {
+    const Vec3& from = loop[k];
+    const Vec3& to = loop[(k + 1) % n];
+    // The loop runs counter-clockwise about the outward normal, so edge x
+    // normal points out of the face, in its plane. Its length is the edge's
+    // (never zero on a validated hull); normalising keeps distances in lengths.
+    const Vec3 outward = (to - from).cross(reference.normal);
+    const double length = outward.norm();
+    if (!(length > 0)) continue;
+    const Plane side{outward / length, outward.dot(from) / length};
+    if (!clip_to_plane(incident, side, scratch)) return false;
+    std::swap(incident, scratch);
+    if (trace)
+      record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
+  }
+  return true;
+}
+
+namespace {
+
 void add_contact(mfz_manifold& out, const Vec3& on_a, const Vec3& on_b, double penetration) {
   mfz_contact& c = out.contacts[out.contact_count++];
   c.point_on_a = to_abi(on_a);
@@ -69,16 +152,16 @@ void add_contact(mfz_manifold& out, const Vec3& on_a, const Vec3& on_b, double p
   c.penetration = penetration;
 }
 
+}  // namespace
+
 // The seed's last loop: each clipped point is on the incident face; its depth
 // is measured from the closest point of the reference polygon, along n.
-void emit_contacts(const Face& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
+void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
                    mfz_manifold& out) {
-  Vec3 reference_loop[kMaxPolygonVertices];
-  const int count = reference.hull->face_size(reference.index);
-  for (int k = 0; k < count; ++k) reference_loop[k] = reference.hull->world_face_point(reference.index, k);
+  const ClipPolygon& loop = *reference.polygon;
   for (int k = 0; k < clipped.size(); ++k) {
     const Vec3& point = clipped[k];
-    const Vec3 on_reference = closest_point_on_polygon(point, reference_loop, count, reference.normal);
+    const Vec3 on_reference = closest_point_on_polygon(point, &loop[0], loop.size(), reference.normal);
     double penetration = (point - on_reference).dot(n);
     if (flipped) penetration = -penetration;
     if (!(penetration < 0)) continue;  // the seed's sanity check: above the reference face, not a contact
@@ -89,7 +172,24 @@ void emit_contacts(const Face& reference, const ClipPolygon& clipped, const Vec3
   }
 }
 
-}  // namespace
+bool seed_reference_is_b(const Vec3& n, const ClipFace& face_a, const ClipFace& face_b) {
+  return std::abs(n.dot(face_a.normal)) < std::abs(n.dot(face_b.normal));
+}
+
+ClippingSteps::ClippingSteps()
+    : face_polygon(coplanar_patch),
+      reference_is_b(seed_reference_is_b),
+      clip_to_sides(clip_to_reference_prism),
+      edge_contact(closest_points_of_edges),
+      emit_contacts(emit_clipped_contacts) {}
+
+ClippingSteps seed_steps() {
+  ClippingSteps steps;
+  steps.clip_to_sides = clip_to_adjacent_face_planes;
+  steps.face_polygon = face_loop;
+  steps.edge_contact = no_edge_contact;
+  return steps;
+}
 
 // Outline, after the seed's CollisionDetectionSAT::GenContactPoints:
 //  1. SAT gives the normal n (A to B) and the depth; no contacts unless p < 0.
@@ -101,10 +201,11 @@ void emit_contacts(const Face& reference, const ClipPolygon& clipped, const Vec3
 //  5. Remove the points above the reference plane.
 //  6. Each remaining point is a contact with its own penetration.
 int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_pose_a, const mfz_hull& hull_b,
-                                   const mfz_pose& abi_pose_b, mfz_manifold& out, ClipTrace* trace) {
+                                   const mfz_pose& abi_pose_b, mfz_manifold& out, ClipTrace* trace,
+                                   const ClippingSteps& steps) {
   const Pose pose_a = Pose::from_abi(abi_pose_a), pose_b = Pose::from_abi(abi_pose_b);
   const PosedHull a(hull_a, pose_a), b(hull_b, pose_b);
-  const SatResult sat = run_sat(a, b);
+  const SatResult sat = steps.sat(a, b);
   if (trace) trace->sat = sat;
   out.contact_count = 0;
   out.colliding = sat.separated ? 0 : 1;
@@ -112,10 +213,11 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   out.penetration = sat.separated ? 0.0 : -sat.depth;
   if (sat.separated || !(out.penetration < 0)) return 0;
   const Vec3 n = sat.normal;
+  if (sat.kind == AxisKind::edge_edge && steps.edge_contact(a, b, sat, out)) return 0;
 
   int support_a = -1, support_b = -1;
-  Face face_a{&a, significant_face(a, n, support_a), {}};
-  Face face_b{&b, significant_face(b, -n, support_b), {}};
+  ClipFace face_a{&a, significant_face(a, n, support_a), {}};
+  ClipFace face_b{&b, significant_face(b, -n, support_b), {}};
   if (trace) trace->face_a = face_a.index, trace->face_b = face_b.index, trace->support_a = support_a,
              trace->support_b = support_b;
   if (face_a.index < 0 || face_b.index < 0) return 1;  // a vertex in no face: not a hull
@@ -136,22 +238,23 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
     return 0;
   }
 
-  const bool flipped = std::abs(n.dot(face_a.normal)) < std::abs(n.dot(face_b.normal));
+  const bool flipped = steps.reference_is_b(n, face_a, face_b);
   if (trace) trace->flipped = flipped;
-  const Face& reference = flipped ? face_b : face_a;
-  const Face& incident = flipped ? face_a : face_b;
-  const int reference_size = reference.hull->face_size(reference.index);
-  if (incident.hull->face_size(incident.index) + reference_size >= kMaxPolygonVertices) return 1;
-
-  ClipPolygon polygon;
-  load_face(incident, polygon);
+  ClipFace& reference = flipped ? face_b : face_a;
+  const ClipFace& incident = flipped ? face_a : face_b;
+  ClipPolygon reference_polygon, polygon;
+  steps.face_polygon(*reference.hull, reference.index, reference_polygon);
+  steps.face_polygon(*incident.hull, incident.index, polygon);
+  reference.polygon = &reference_polygon;
+  // Each side plane can add one point: refuse rather than overflow.
+  if (polygon.size() + reference_polygon.size() >= kMaxPolygonVertices) return 1;
   record(trace, "incident face", polygon);
-  if (!clip_to_side_planes(reference, polygon, trace)) return 1;
+  if (!steps.clip_to_sides(reference, polygon, trace)) return 1;
   const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
   remove_points_outside(polygon, Plane{reference.normal, reference.normal.dot(on_reference)});
   record(trace, "points above the reference plane removed", polygon);
   reduce_polygon(polygon, MFZ_MAX_CONTACTS);
-  emit_contacts(reference, polygon, n, flipped, out);
+  steps.emit_contacts(reference, polygon, n, flipped, out);
   return 0;
 }
 

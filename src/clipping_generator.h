@@ -24,10 +24,70 @@ struct ClipTrace {
   std::vector<Step> steps;       ///< the incident polygon after each clip
 };
 
+class ClipPolygon;
+
+/// A significant face in world space, and the polygon that stands for it.
+struct ClipFace {
+  const PosedHull* hull = nullptr;
+  int index = -1;
+  Vec3 normal;  ///< world, outward
+  const ClipPolygon* polygon = nullptr;  ///< world loop, counter-clockwise about normal
+};
+
+/// The generator's steps, each replaceable: the project's deliberately broken
+/// generators (tests/mutants) swap one step each, so the harness can be shown
+/// to catch each bug. The defaults are the built-in generator.
+struct ClippingSteps {
+  /// The separating-axis test.
+  SatResult (*sat)(const PosedHull& a, const PosedHull& b) = run_sat;
+  /// The world polygon of a significant face.
+  void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
+  /// True when B's significant face is the reference face.
+  bool (*reference_is_b)(const Vec3& n, const ClipFace& face_a, const ClipFace& face_b);
+  /// Clips the incident polygon against the reference face's side planes;
+  /// false if a buffer would overflow.
+  bool (*clip_to_sides)(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
+  /// On an edge-edge axis: writes the contact(s) into `out` and returns true,
+  /// or returns false to clip faces as for a face axis.
+  bool (*edge_contact)(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
+  /// Writes the contacts for the clipped points into `out`.
+  void (*emit_contacts)(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
+                        mfz_manifold& out);
+  ClippingSteps();
+};
+
+/// The seed's steps exactly, before the harness's findings (FINDINGS.md) fixed
+/// them: the `manifuzz_seed` plugin, against which every finding's case fails.
+ClippingSteps seed_steps();
+
+/// The seed's polygon: the face's own loop.
+void face_loop(const PosedHull& hull, int face, ClipPolygon& out);
+/// The boundary of the largest patch of coplanar faces around `face` (F2: a
+/// hull whose faces arrive triangulated still clips against the whole face).
+void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out);
+
+/// The seed: edge axes are clipped like face axes.
+bool no_edge_contact(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
+/// F3: the closest points of the two supporting edges are the one contact.
+bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
+
+/// The seed's rule: the significant face more parallel to n is the reference.
+bool seed_reference_is_b(const Vec3& n, const ClipFace& face_a, const ClipFace& face_b);
+/// The seed's clip: Sutherland-Hodgman against the planes of the faces adjacent
+/// to the reference face. Wrong where those faces slope inwards (FINDINGS.md F1).
+bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
+/// Sutherland-Hodgman against the prism over the reference face: through each
+/// edge, the plane perpendicular to the face.
+bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
+/// Each point a contact, its depth measured from the reference polygon along n.
+void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
+                           mfz_manifold& out);
+
 /// Fills `out` for hulls a and b at their poses (orientations unit length).
 /// Returns 0, or 1 when it refuses: a face too large for its fixed buffers.
 int32_t generate_clipping_manifold(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b,
-                                   const mfz_pose& pose_b, mfz_manifold& out, ClipTrace* trace = nullptr);
+                                   const mfz_pose& pose_b, mfz_manifold& out, ClipTrace* trace = nullptr,
+                                   const ClippingSteps& steps = ClippingSteps());
 
 /// The face of `hull` the seed calls significant for `direction`: of the faces
 /// that contain the vertex furthest along `direction`, the one whose normal is

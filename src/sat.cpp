@@ -1,5 +1,7 @@
 #include "sat.h"
 
+#include <algorithm>
+
 #include "tolerances.h"
 
 namespace mfz {
@@ -24,16 +26,21 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 namespace {
 
 // Tries one candidate axis (unit length). Returns false when it separates.
+// An edge axis must beat a face axis by tol::kEdgeAxisBias of the extent.
 bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind kind, int fa, int fb,
               SatResult& best) {
-  bool b_along_axis = true;
-  const double overlap = overlap_along(a, b, axis, b_along_axis);
+  const Interval ia = a.project(axis), ib = b.project(axis);
+  const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;
+  const bool b_along_axis = b_above <= b_below;
+  const double overlap = b_along_axis ? b_above : b_below;
   if (overlap < 0) {
     best = {true, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
     return false;
   }
-  if (overlap < best.depth)
-    best = {false, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
+  const bool edge_after_face = kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
+  const double margin =
+      edge_after_face ? tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) : 0.0;
+  if (overlap < best.depth - margin) best = {false, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
   return true;
 }
 
@@ -70,7 +77,9 @@ SatResult run_sat(const PosedHull& a, const PosedHull& b) {
       // Parallel edges span no new axis (a face normal covers it); dividing by
       // a vanishing length would only amplify rounding.
       if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+      const double before = best.depth;
       separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, best);
+      if (separated || best.depth != before) best.edge_a = edge_a, best.edge_b = edge_b;
       return !separated;
     });
     return !separated;

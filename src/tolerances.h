@@ -57,4 +57,12 @@ inline constexpr double kHullConvexity = 1e-9;
 /// and is skipped (guarded normalisation).
 inline constexpr double kParallelEdges = 1e-9;
 
+/// Generator: an edge-edge axis replaces the best face axis only when its
+/// overlap is smaller by more than this fraction of the hulls' extent along
+/// it, so that a tie (to rounding) keeps the face contact and its polygon.
+inline constexpr double kEdgeAxisBias = 1e-9;
+/// Generator: the supporting edges of an edge-edge axis make a contact only if
+/// their closest points lie along n to within this fraction of their lengths.
+inline constexpr double kEdgesCross = 1e-9;
+
 }  // namespace mfz::tol

@@ -36,5 +36,6 @@ std::optional<double> parse_seconds(const std::string& text);
 
 int replay_command(const std::vector<std::string>& words);
 int explain_command(const std::vector<std::string>& words);
+int check_command(const std::vector<std::string>& words);
 
 }  // namespace mfz::cli

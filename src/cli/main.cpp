@@ -11,6 +11,9 @@ constexpr const char* kUsage =
     "usage: manifuzz <command> ...\n"
     "  replay  [--generator G] [--json] FILE...   check the cases in FILE... and print their verdicts\n"
     "  explain [--generator G] FILE               walk through one case step by step\n"
+    "  check   [--generator G] [--cases N] [--seed S] [--seconds T] [--out DIR]\n"
+    "                                             run the property suite on random cases; write a\n"
+    "                                             minimised case for the first violation\n"
     "G is 'builtin' (the default) or a path to a generator plugin .so.\n"
     "Exit status: 0 nothing found, 1 an invariant was violated, 2 usage, load or input error.\n";
 
@@ -26,6 +29,7 @@ int main(int argc, char** argv) {
   words.erase(words.begin());
   if (command == "replay") return mfz::cli::replay_command(words);
   if (command == "explain") return mfz::cli::explain_command(words);
+  if (command == "check") return mfz::cli::check_command(words);
   std::cerr << "manifuzz: unknown command '" << command << "' (try manifuzz --help)\n";
   return mfz::cli::kExitInputError;
 }

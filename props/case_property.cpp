@@ -1,0 +1,73 @@
+#include "case_property.h"
+
+#include "relations.h"
+
+namespace mfz::props {
+namespace {
+
+CaseTags tags_of(const OracleAnswers& o, const mfz_manifold& m) {
+  CaseTags tags;
+  tags.touching = o.touching;
+  tags.tie = o.axis_tie;
+  tags.contact_count = m.contact_count;
+  if (!o.exact.colliding) tags.contact_kind = "separated";
+  else if (!o.sat_axes.empty() && o.sat_axes[0].kind == AxisKind::edge_edge) tags.contact_kind = "edge-edge";
+  else if (m.contact_count >= 3) tags.contact_kind = "face-face";
+  else if (m.contact_count == 2) tags.contact_kind = "edge-face";
+  else if (m.contact_count == 1) tags.contact_kind = "vertex-face";
+  else tags.contact_kind = "no-contacts";
+  return tags;
+}
+
+}  // namespace
+
+CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Selection& selection) {
+  CaseOutcome outcome;
+  SceneBuild built = make_scene(c);
+  if (!built.scene) {
+    outcome.invalid = true;
+    outcome.invalid_reason = built.error;
+    return outcome;
+  }
+  const Scene& scene = *built.scene;
+  const mfz_hull a = scene.hull_a.view(), b = scene.hull_b.view();
+  const mfz_pose pa = scene.abi_pose_a(), pb = scene.abi_pose_b();
+  mfz_manifold manifold;
+  int32_t status = 0;
+  std::string failure;
+  const CallOutcome call = generator.generate(a, pa, b, pb, manifold, status, failure);
+  if (call != CallOutcome::done) {
+    outcome.finding = Finding{call == CallOutcome::crashed ? "crash" : "hang", failure};
+    return outcome;
+  }
+  const OracleAnswers oracles = consult_oracles(scene);
+  if (!oracles.minkowski) {
+    outcome.invalid = true;
+    outcome.invalid_reason = "the exact oracle failed: " + oracles.error;
+    return outcome;
+  }
+  const Verdict verdict = check_manifold(scene, oracles, status, manifold);
+  outcome.tags = tags_of(oracles, manifold);
+  if (verdict.refused()) {
+    outcome.finding = Finding{"refused", "status " + std::to_string(status)};
+    return outcome;
+  }
+  for (const InvariantCheck& check : verdict.checks)
+    if (check.status == CheckStatus::fail && selection.wants(check.name)) {
+      outcome.finding = Finding{check.name, check.detail + " (error " + std::to_string(check.error) + " L, tol " +
+                                                std::to_string(check.tolerance) + " L)"};
+      return outcome;
+    }
+  // Relations only make sense on a manifold that is itself right.
+  if (verdict.first_violation()) return outcome;
+  const RelationInput input{c, scene, manifold, oracles.axis_tie, oracles.touching};
+  for (const std::string& name : relation_names())
+    if (selection.wants(name))
+      if (auto finding = check_relation(name, input, generator)) {
+        outcome.finding = finding;
+        return outcome;
+      }
+  return outcome;
+}
+
+}  // namespace mfz::props

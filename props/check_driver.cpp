@@ -1,0 +1,143 @@
+#include "check_driver.h"
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "families.h"
+
+namespace mfz::props {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+// Counts per category, printed as a table at the end (RapidCheck's
+// RC_CLASSIFY, for a run outside GoogleTest).
+class Statistics {
+ public:
+  void count(const std::string& table, const std::string& key) { ++tables_[table][key]; }
+  void print(std::ostream& out, long long total) const {
+    for (const auto& [table, rows] : tables_) {
+      out << "  " << table << ":";
+      for (const auto& [key, n] : rows)
+        out << "  " << key << " " << std::fixed << std::setprecision(1) << 100.0 * n / std::max(1LL, total) << "%";
+      out << std::defaultfloat << "\n";
+    }
+  }
+
+ private:
+  std::map<std::string, std::map<std::string, long long>> tables_;
+};
+
+std::string count_bucket(int n) {
+  if (n <= 4) return std::to_string(n);
+  return n <= 8 ? "5-8" : (n <= 16 ? "9-16" : "17+");
+}
+
+void record(Statistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
+  stats.count("hull family A", g.hull_a);
+  stats.count("placement", g.placement);
+  stats.count("overlap", g.overlap);
+  stats.count("tilt", g.tilt);
+  stats.count("frame", g.frame);
+  stats.count("scale", g.scale);
+  stats.count("contact kind", o.tags.contact_kind);
+  stats.count("contacts", count_bucket(o.tags.contact_count));
+  if (o.tags.touching) stats.count("special", "touching");
+  if (o.tags.tie) stats.count("special", "axis tie");
+}
+
+// Greedy shrinking over RapidCheck's shrink tree: take the first smaller case
+// that fails with the same name, until none does.
+rc::Shrinkable<GeneratedCase> shrink(rc::Shrinkable<GeneratedCase> failing, Finding& finding, GeneratorSession& g,
+                                     const Selection& selection, int& steps) {
+  const auto started = Clock::now();
+  bool smaller = true;
+  while (smaller && since(started) < 120) {
+    smaller = false;
+    auto candidates = failing.shrinks();
+    while (auto candidate = candidates.next()) {
+      const CaseOutcome o = check_case(candidate->value().file, g, selection);
+      if (!o.invalid && o.finding && o.finding->name == finding.name) {
+        failing = *candidate;
+        finding = *o.finding;
+        smaller = true;
+        ++steps;
+        break;
+      }
+    }
+  }
+  return failing;
+}
+
+std::string write_case(const CheckOptions& options, const GeneratedCase& g, const Finding& f, long long index,
+                       std::string& text, std::string& error) {
+  CaseFile file = g.file;
+  file.extensions.push_back("note found by: manifuzz check --generator " + options.generator + " --seed " +
+                            std::to_string(options.seed) + " (case " + std::to_string(index) + ", then shrunk)");
+  file.extensions.push_back("note violation: " + f.name + ": " + f.detail);
+  text = format_case(file);
+  std::error_code ec;
+  std::filesystem::create_directories(options.out_dir, ec);
+  const std::string path =
+      options.out_dir + "/" + f.name + "-" + std::to_string(std::hash<std::string>{}(text) % 100000000) + ".case";
+  if (!write_case_file(path, file, error)) return {};
+  return path;
+}
+
+}  // namespace
+
+std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error) {
+  auto generator = open_session(options.generator, options.call_timeout, error);
+  if (!generator) return std::nullopt;
+  log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << " (replay with --seed "
+      << options.seed << ")\n";
+  const auto gen = any_case();
+  rc::Random random(options.seed);
+  Statistics stats;
+  CheckResult result;
+  const auto started = Clock::now();
+  double last_progress = 0;
+  for (long long index = 0;; ++index) {
+    if (options.cases && result.cases >= *options.cases) break;
+    if (options.seconds && since(started) >= *options.seconds) break;
+    const auto shrinkable = gen(random.split(), static_cast<int>(index % 100));
+    const GeneratedCase generated = shrinkable.value();
+    const CaseOutcome outcome = check_case(generated.file, *generator, options.selection);
+    if (outcome.invalid) {
+      ++result.invalid;
+      continue;
+    }
+    ++result.cases;
+    record(stats, generated, outcome);
+    if (outcome.finding) {
+      Finding finding = *outcome.finding;
+      log << "found " << finding.name << " at case " << index << ": " << finding.detail << "\nshrinking...\n";
+      const auto minimal = shrink(shrinkable, finding, *generator, options.selection, result.shrink_steps);
+      result.finding = finding;
+      result.found_at_case = index;
+      result.case_path = write_case(options, minimal.value(), finding, index, result.minimised_text, error);
+      if (result.case_path.empty()) return std::nullopt;
+      break;
+    }
+    const double now = since(started);
+    if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
+      last_progress = now;
+      log << "  " << result.cases << " cases, " << static_cast<long long>(result.cases / now) << " cases/s, "
+          << result.invalid << " invalid\n";
+    }
+  }
+  result.seconds = since(started);
+  log << "manifuzz check: " << result.cases << " cases in " << std::setprecision(3) << result.seconds << " s ("
+      << static_cast<long long>(result.cases / std::max(result.seconds, 1e-9)) << " cases/s), " << result.invalid
+      << " invalid inputs discarded\n";
+  stats.print(log, result.cases);
+  return result;
+}
+
+}  // namespace mfz::props

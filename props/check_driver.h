@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// `manifuzz check`: draws cases from the families, runs the case property
+/// against a generator, shrinks the first finding to a small case, writes it,
+/// and keeps statistics of what the run covered.
+#include <cstdint>
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include "case_property.h"
+
+namespace mfz::props {
+
+struct CheckOptions {
+  std::string generator = "builtin";
+  std::optional<long long> cases;    ///< stop after this many valid cases
+  std::optional<double> seconds;     ///< or after this long
+  uint64_t seed = 0;
+  std::string out_dir = "failures";  ///< where minimised cases are written
+  double call_timeout = 5;           ///< per generator call, seconds (plugins)
+  double progress_every = 5;         ///< seconds between progress lines; 0: none
+  Selection selection;
+};
+
+/// What a run found. `finding` is empty when nothing was.
+struct CheckResult {
+  long long cases = 0, invalid = 0, oracle_disagreements = 0;
+  double seconds = 0;
+  std::optional<Finding> finding;
+  long long found_at_case = -1;
+  std::string case_path;     ///< the minimised case file
+  std::string minimised_text;
+  int shrink_steps = 0;
+};
+
+/// Runs the check; progress and statistics go to `log`. Returns nullopt and a
+/// one-line `error` when the generator cannot be loaded or the out folder
+/// cannot be written.
+std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error);
+
+}  // namespace mfz::props

@@ -1,0 +1,16 @@
+#pragma once
+/// \file
+/// Closest points on simple shapes: shared by the exact oracle and the
+/// relations' comparison of contact sets.
+#include "vec.h"
+
+namespace mfz {
+
+/// The point of segment [a, b] closest to p (a degenerate segment is a).
+Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
+/// The point of triangle (a, b, c) closest to p, by Voronoi regions (Ericson,
+/// Real-Time Collision Detection, 5.1.5); a degenerate triangle falls back to
+/// its closest edge.
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
+
+}  // namespace mfz
