@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "clip_polygon.h"
+#include "tolerances.h"
 
 namespace mfz {
 
@@ -39,9 +40,6 @@ void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
 
 namespace {
 
-/// Faces whose unit normals' dot product exceeds this are one plane for F2
-/// (an angle below 1.4e-6 rad); a triangulated face's triangles share it exactly.
-constexpr double kCoplanarDot = 1 - 1e-12;
 /// Fixed capacity of a coplanar patch: faces, and boundary edges.
 constexpr int kMaxPatchFaces = 256;
 constexpr int kMaxPatchEdges = 512;
@@ -62,7 +60,7 @@ int gather_patch(const PosedHull& hull, int face, int* members) {
     for (int k = 0; k < n; ++k) {
       const int g = hull.face_across(hull.face_vertex(f, k), hull.face_vertex(f, (k + 1) % n));
       if (g < 0 || count == kMaxPatchFaces || contains(members, count, g)) continue;
-      if (hull.world_face_normal(g).dot(normal) >= kCoplanarDot) members[count++] = g;
+      if (hull.world_face_normal(g).dot(normal) >= tol::kCoplanarDot) members[count++] = g;
     }
   }
   return count;
@@ -188,6 +186,7 @@ ClippingSteps seed_steps() {
   steps.clip_to_sides = clip_to_adjacent_face_planes;
   steps.face_polygon = face_loop;
   steps.edge_contact = no_edge_contact;
+  steps.sat = run_seed_sat;
   return steps;
 }
 
@@ -213,7 +212,10 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   out.penetration = sat.separated ? 0.0 : -sat.depth;
   if (sat.separated || !(out.penetration < 0)) return 0;
   const Vec3 n = sat.normal;
-  if (sat.kind == AxisKind::edge_edge && steps.edge_contact(a, b, sat, out)) return 0;
+  if (sat.kind == AxisKind::edge_edge && steps.edge_contact(a, b, sat, out)) {
+    if (trace) trace->edge_contact = true;
+    return 0;
+  }
 
   int support_a = -1, support_b = -1;
   ClipFace face_a{&a, significant_face(a, n, support_a), {}};

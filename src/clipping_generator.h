@@ -17,6 +17,7 @@ struct ClipTrace {
   int face_a = -1, face_b = -1;  ///< significant faces
   int support_a = -1, support_b = -1;  ///< the vertices they were chosen from
   bool flipped = false;          ///< true: B's face is the reference face
+  bool edge_contact = false;     ///< the contact came from the two supporting edges
   struct Step {
     std::string what;
     std::vector<Vec3> polygon;

@@ -28,7 +28,7 @@ namespace {
 // Tries one candidate axis (unit length). Returns false when it separates.
 // An edge axis must beat a face axis by tol::kEdgeAxisBias of the extent.
 bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind kind, int fa, int fb,
-              SatResult& best) {
+              SatResult& best, bool prefer_faces) {
   const Interval ia = a.project(axis), ib = b.project(axis);
   const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;
   const bool b_along_axis = b_above <= b_below;
@@ -37,15 +37,15 @@ bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind
     best = {true, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
     return false;
   }
-  const bool edge_after_face = kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
+  const bool edge_after_face = prefer_faces && kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
   const double margin =
       edge_after_face ? tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) : 0.0;
   if (overlap < best.depth - margin) best = {false, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
   return true;
 }
 
-// Calls visit(edge_index, v0, v1) once per undirected edge: the loop step with
-// v0 < v1 stands for the edge, its twin (v1 -> v0) is skipped.
+// Calls visit(edge_index, v0, v1, face) once per undirected edge: the loop
+// step v0 -> v1 of `face` with v0 < v1 stands for the edge, its twin is skipped.
 template <class Visit>
 void for_each_edge(const PosedHull& hull, Visit&& visit) {
   int index = 0;
@@ -53,38 +53,61 @@ void for_each_edge(const PosedHull& hull, Visit&& visit) {
     const int n = hull.face_size(f);
     for (int k = 0; k < n; ++k) {
       const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
-      if (v0 < v1 && !visit(index++, v0, v1)) return;
+      if (v0 < v1 && !visit(index++, v0, v1, f)) return;
     }
   }
 }
 
+// An edge between two coplanar faces (a triangulated face's diagonal) is no
+// edge of the polyhedron: its axes belong to no Minkowski face (FINDINGS F4).
+// Checked only for an axis about to win, since finding the other face scans loops.
+bool is_flat_edge(const PosedHull& hull, int v0, int v1, int face) {
+  const int other = hull.face_across(v0, v1);
+  return other >= 0 && hull.world_face_normal(other).dot(hull.world_face_normal(face)) >= tol::kCoplanarDot;
+}
+
 }  // namespace
 
-SatResult run_sat(const PosedHull& a, const PosedHull& b) {
+namespace {
+
+// fixed: the harness's fixes F3 (face axes win near-ties) and F4 (flat edges
+// span no axis); without them, the seed's plain minimum.
+SatResult sat_with(const PosedHull& a, const PosedHull& b, bool fixed) {
   SatResult best;
   best.depth = std::numeric_limits<double>::infinity();
   for (int f = 0; f < a.face_count(); ++f)
-    if (!consider(a, b, a.world_face_normal(f), AxisKind::face_a, f, -1, best)) return best;
+    if (!consider(a, b, a.world_face_normal(f), AxisKind::face_a, f, -1, best, fixed)) return best;
   for (int f = 0; f < b.face_count(); ++f)
-    if (!consider(a, b, b.world_face_normal(f), AxisKind::face_b, -1, f, best)) return best;
+    if (!consider(a, b, b.world_face_normal(f), AxisKind::face_b, -1, f, best, fixed)) return best;
   bool separated = false;
-  for_each_edge(a, [&](int ea, int a0, int a1) {
+  for_each_edge(a, [&](int ea, int a0, int a1, int face_a) {
     const Vec3 edge_a = a.world_vertex(a1) - a.world_vertex(a0);
-    for_each_edge(b, [&](int eb, int b0, int b1) {
+    for_each_edge(b, [&](int eb, int b0, int b1, int face_b) {
       const Vec3 edge_b = b.world_vertex(b1) - b.world_vertex(b0);
       const Vec3 axis = edge_a.cross(edge_b);
       const double length = axis.norm();
       // Parallel edges span no new axis (a face normal covers it); dividing by
       // a vanishing length would only amplify rounding.
       if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
-      const double before = best.depth;
-      separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, best);
-      if (separated || best.depth != before) best.edge_a = edge_a, best.edge_b = edge_b;
+      SatResult candidate = best;
+      separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, candidate, fixed);
+      if (!separated && candidate.depth == best.depth) return true;
+      if (fixed && (is_flat_edge(a, a0, a1, face_a) || is_flat_edge(b, b0, b1, face_b))) {
+        separated = false;
+        return true;
+      }
+      best = candidate;
+      best.edge_a = edge_a, best.edge_b = edge_b;
       return !separated;
     });
     return !separated;
   });
   return best;
 }
+
+}  // namespace
+
+SatResult run_sat(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, true); }
+SatResult run_seed_sat(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, false); }
 
 }  // namespace mfz

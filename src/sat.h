@@ -34,6 +34,10 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// edge pairs; a candidate replaces the best only when its overlap is strictly
 /// smaller, so the earlier axis wins an exact tie. Stops at the first
 /// separating axis. Allocates nothing.
+SatResult run_seed_sat(const PosedHull& a, const PosedHull& b);
+/// The built-in generator's SAT: the seed's, except that an edge axis must
+/// beat the face axes by tol::kEdgeAxisBias (F3) and edges between coplanar
+/// faces give no axis (F4).
 SatResult run_sat(const PosedHull& a, const PosedHull& b);
 
 }  // namespace mfz

@@ -57,6 +57,10 @@ inline constexpr double kHullConvexity = 1e-9;
 /// and is skipped (guarded normalisation).
 inline constexpr double kParallelEdges = 1e-9;
 
+/// Generator: faces whose unit normals' dot product is at least this lie in one
+/// plane (an angle below 1.4e-6 rad); a triangulated face's triangles share
+/// the face's normal exactly.
+inline constexpr double kCoplanarDot = 1 - 1e-12;
 /// Generator: an edge-edge axis replaces the best face axis only when its
 /// overlap is smaller by more than this fraction of the hulls' extent along
 /// it, so that a tie (to rounding) keeps the face contact and its polygon.

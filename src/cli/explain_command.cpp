@@ -52,6 +52,11 @@ void describe_clipping(std::ostream& out, const CaseRun& run) {
   out << "\n2. The built-in generator's SAT picks " << axis_kind_name(sat.kind) << " (A feature " << sat.feature_a
       << ", B feature " << sat.feature_b << "):\n     n = " << vec_text(sat.normal) << " (from A to B), "
       << (sat.separated ? "separating overlap " : "depth ") << sat.depth << "\n";
+  if (trace.edge_contact) {
+    out << "   An edge-edge axis: the contact is the closest pair of points of the edge of A furthest along n\n"
+        << "   and the edge of B furthest along -n (FINDINGS.md F3); no faces are clipped.\n";
+    return;
+  }
   if (sat.separated || trace.face_a < 0) {
     out << "   No penetration, so no contacts.\n";
     return;

@@ -1,0 +1,60 @@
+// Every case in corpus/regressions is a minimised finding: the built-in
+// generator must pass the whole property on it (invariants and relations), and
+// the seed's unfixed method must answer as the case's `expect-seed` line says
+// (the finding it shows, or `pass` for a bug a later fix introduced), so each
+// case still pins what it was kept for. Regression cases are never deleted.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "case_property.h"
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+std::vector<std::string> regression_cases() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(test::corpus_path("regressions")))
+    if (entry.path().extension() == ".case") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+class RegressionCase : public ::testing::TestWithParam<std::string> {};
+
+std::string expected_seed_outcome(const CaseFile& c) {
+  for (const std::string& line : c.extensions)
+    if (line.rfind("expect-seed ", 0) == 0) return line.substr(12);
+  return {};
+}
+
+TEST_P(RegressionCase, BuiltinPassesAndTheSeedAnswersAsRecorded) {
+  const CaseParse parsed = read_case_file(GetParam());
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const auto builtin = in_process_session(Generator::builtin());
+  const props::CaseOutcome fixed = props::check_case(*parsed.value, *builtin);
+  ASSERT_FALSE(fixed.invalid) << fixed.invalid_reason;
+  EXPECT_FALSE(fixed.finding) << fixed.finding->name << ": " << fixed.finding->detail;
+  std::string error;
+  const auto seed = Generator::open(std::string(MANIFUZZ_PLUGIN_DIR) + "/libmanifuzz_seed.so", error);
+  ASSERT_TRUE(seed) << error;
+  const auto seed_session = in_process_session(*seed);
+  const props::CaseOutcome unfixed = props::check_case(*parsed.value, *seed_session);
+  const std::string expected = expected_seed_outcome(*parsed.value);
+  ASSERT_FALSE(expected.empty()) << "the case has no 'expect-seed' line";
+  EXPECT_EQ(unfixed.finding ? unfixed.finding->name : "pass", expected);
+}
+
+INSTANTIATE_TEST_SUITE_P(Corpus, RegressionCase, ::testing::ValuesIn(regression_cases()),
+                         [](const auto& info) {
+                           std::string name = std::filesystem::path(info.param).stem().string();
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+
+TEST(RegressionCorpus, HoldsTheFindings) { EXPECT_GE(regression_cases().size(), 4u); }
+
+}  // namespace
+}  // namespace mfz
