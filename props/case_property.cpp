@@ -1,5 +1,7 @@
 #include "case_property.h"
 
+#include <cstdio>
+
 #include "relations.h"
 
 namespace mfz::props {
@@ -54,8 +56,9 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
   }
   for (const InvariantCheck& check : verdict.checks)
     if (check.status == CheckStatus::fail && selection.wants(check.name)) {
-      outcome.finding = Finding{check.name, check.detail + " (error " + std::to_string(check.error) + " L, tol " +
-                                                std::to_string(check.tolerance) + " L)"};
+      char margin[96];
+      std::snprintf(margin, sizeof margin, " (error %.3g L, tol %.3g L)", check.error, check.tolerance);
+      outcome.finding = Finding{check.name, check.detail + margin};
       return outcome;
     }
   // Relations only make sense on a manifold that is itself right.

@@ -54,6 +54,11 @@ expect 2 'unknown command' -- "$manifuzz" frobnicate
 expect 2 'usage' -- "$manifuzz"
 expect 1 'VIOLATION finite ' -- "$manifuzz" replay --generator "$plugin_dir/libmfz_test_forgetful.so" "$good"
 expect 0 'verdict pass' -- "$manifuzz" replay --generator "$plugin_dir/libmanifuzz_clipping.so" "$good"
+expect 1 'VIOLATION crash ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --cases 200 --seed 3 --out "$scratch/crash" --quiet
+expect 1 'VIOLATION hang ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_hanging.so" --cases 200 --seed 3 --out "$scratch/hang" --call-timeout 0.2 --quiet
+expect 0 'manifuzz check: 50 cases' -- "$manifuzz" check --cases 50 --seed 3 --out "$scratch/none"
+expect 2 'not a manifuzz generator' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_missing_symbol.so" --cases 5
+expect 2 '--cases takes' -- "$manifuzz" check --cases -3
 expect_one_line_error 'line 5' -- "$manifuzz" replay "$scratch/short_line.case"
 expect_one_line_error 'fewer than four' -- "$manifuzz" explain "$scratch/three_points.case"
 expect_one_line_error 'cannot load generator' -- "$manifuzz" replay --generator "$scratch/text.so" "$good"
