@@ -16,22 +16,40 @@ struct Interval {
   double max = -std::numeric_limits<double>::infinity();
 };
 
+/// World vertices are cached on the stack for hulls up to this size (larger
+/// hulls are rotated on demand), so SAT's projections are plain dot products.
+inline constexpr int kCachedVertices = 128;
+
 class PosedHull {
  public:
-  PosedHull(const mfz_hull& hull, const Pose& pose) : hull_(hull), pose_(pose), rotation_(pose.orientation.toRotationMatrix()) {}
+  PosedHull(const mfz_hull& hull, const Pose& pose)
+      : hull_(hull), pose_(pose), rotation_(pose.orientation.toRotationMatrix()),
+        cached_(hull.vertex_count <= kCachedVertices) {
+    if (cached_)
+      for (int i = 0; i < hull.vertex_count; ++i) world_[i] = rotation_ * local_vertex(i) + pose_.position;
+  }
 
   int vertex_count() const { return hull_.vertex_count; }
   int face_count() const { return hull_.face_count; }
   int face_size(int f) const { return hull_.face_offsets[f + 1] - hull_.face_offsets[f]; }
   int face_vertex(int f, int k) const { return hull_.face_vertices[hull_.face_offsets[f] + k]; }
   Vec3 local_vertex(int i) const { return to_vec(hull_.vertices[i]); }
-  Vec3 world_vertex(int i) const { return rotation_ * local_vertex(i) + pose_.position; }
+  Vec3 world_vertex(int i) const { return cached_ ? world_[i] : Vec3(rotation_ * local_vertex(i) + pose_.position); }
   Vec3 world_face_normal(int f) const { return rotation_ * to_vec(hull_.face_normals[f]); }
   /// World position of the k-th vertex of face f's loop.
   Vec3 world_face_point(int f, int k) const { return world_vertex(face_vertex(f, k)); }
 
   /// Projection of the hull onto a world direction (need not be unit).
   Interval project(const Vec3& world_axis) const {
+    if (cached_) {
+      Interval range;
+      for (int i = 0; i < hull_.vertex_count; ++i) {
+        const double d = world_axis.dot(world_[i]);
+        range.min = d < range.min ? d : range.min;
+        range.max = d > range.max ? d : range.max;
+      }
+      return range;
+    }
     const Vec3 local_axis = rotation_.transpose() * world_axis;
     Interval range;
     for (int i = 0; i < hull_.vertex_count; ++i) {
@@ -70,6 +88,8 @@ class PosedHull {
   const mfz_hull& hull_;
   const Pose& pose_;
   Mat3 rotation_;
+  bool cached_;
+  Vec3 world_[kCachedVertices];
 };
 
 }  // namespace mfz
