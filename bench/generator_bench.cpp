@@ -4,26 +4,14 @@
 #include <cmath>
 #include <random>
 
+#include "bench_cases.h"
+
 #include "builtin_generator.h"
+#include "families.h"
 #include "scene.h"
 
 namespace mfz {
 namespace {
-
-std::vector<Vec3> box(double hx, double hy, double hz) {
-  std::vector<Vec3> points;
-  for (double sx : {-1.0, 1.0})
-    for (double sy : {-1.0, 1.0})
-      for (double sz : {-1.0, 1.0}) points.emplace_back(sx * hx, sy * hy, sz * hz);
-  return points;
-}
-
-std::vector<Vec3> sphere_cloud(int count, std::mt19937_64& random) {
-  std::normal_distribution<double> gauss;
-  std::vector<Vec3> points;
-  for (int k = 0; k < count; ++k) points.push_back(Vec3(gauss(random), gauss(random), gauss(random)).normalized());
-  return points;
-}
 
 void run_queries(benchmark::State& state, const Scene& scene) {
   const mfz_hull a = scene.hull_a.view(), b = scene.hull_b.view();
@@ -38,8 +26,8 @@ void run_queries(benchmark::State& state, const Scene& scene) {
 
 void BM_BoxOnBoxFaceContact(benchmark::State& state) {
   CaseFile c;
-  c.points_a = box(2, 2, 0.5);
-  c.points_b = box(0.5, 0.5, 0.5);
+  c.points_a = props::box_corners(2, 2, 0.5);
+  c.points_b = props::box_corners(0.5, 0.5, 0.5);
   c.pose_b = {Vec3(0.1, 0.2, 0.9), Quat(Eigen::AngleAxisd(0.3, Vec3::UnitZ()))};
   run_queries(state, *make_scene(c).scene);
 }
@@ -48,8 +36,8 @@ BENCHMARK(BM_BoxOnBoxFaceContact);
 void BM_Two32PointHulls(benchmark::State& state) {
   std::mt19937_64 random(0x1ee7c0de);
   CaseFile c;
-  c.points_a = sphere_cloud(32, random);
-  c.points_b = sphere_cloud(32, random);
+  c.points_a = bench::sphere_cloud(32, random);
+  c.points_b = bench::sphere_cloud(32, random);
   c.pose_b = {Vec3(0.3, 0.2, 1.4), Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()))};
   run_queries(state, *make_scene(c).scene);
 }

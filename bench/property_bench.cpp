@@ -4,17 +4,12 @@
 
 #include <random>
 
+#include "bench_cases.h"
+
 #include "case_property.h"
 
 namespace mfz {
 namespace {
-
-std::vector<Vec3> sphere_cloud(int count, std::mt19937_64& random) {
-  std::normal_distribution<double> gauss;
-  std::vector<Vec3> points;
-  for (int k = 0; k < count; ++k) points.push_back(Vec3(gauss(random), gauss(random), gauss(random)).normalized());
-  return points;
-}
 
 void BM_WholePropertyPerCase(benchmark::State& state) {
   const int points = static_cast<int>(state.range(0));
@@ -22,8 +17,8 @@ void BM_WholePropertyPerCase(benchmark::State& state) {
   std::vector<CaseFile> cases;
   for (int k = 0; k < 64; ++k) {
     CaseFile c;
-    c.points_a = sphere_cloud(points, random);
-    c.points_b = sphere_cloud(points, random);
+    c.points_a = bench::sphere_cloud(points, random);
+    c.points_b = bench::sphere_cloud(points, random);
     std::uniform_real_distribution<double> u(-1, 1);
     c.pose_b = {Vec3(u(random), u(random), u(random)), Quat(Eigen::AngleAxisd(3 * u(random), Vec3(1, 2, 3).normalized()))};
     cases.push_back(c);

@@ -33,14 +33,6 @@ Vec3 any_perpendicular(const Vec3& n) {
   return n.cross(helper).normalized();
 }
 
-std::vector<Vec3> box_corners(double hx, double hy, double hz) {
-  std::vector<Vec3> points;
-  for (double sx : {-1.0, 1.0})
-    for (double sy : {-1.0, 1.0})
-      for (double sz : {-1.0, 1.0}) points.emplace_back(sx * hx, sy * hy, sz * hz);
-  return points;
-}
-
 std::vector<Vec3> regular_polygon(int sides, double radius, double z) {
   std::vector<Vec3> ring;
   for (int k = 0; k < sides; ++k) {
@@ -221,6 +213,14 @@ void place_along(const Placed& a, Placed& b, const Vec3& d, double overlap, doub
 }
 
 }  // namespace
+
+std::vector<Vec3> box_corners(double hx, double hy, double hz) {
+  std::vector<Vec3> points;
+  for (double sx : {-1.0, 1.0})
+    for (double sy : {-1.0, 1.0})
+      for (double sz : {-1.0, 1.0}) points.emplace_back(sx * hx, sy * hy, sz * hz);
+  return points;
+}
 
 const std::vector<std::string>& hull_family_names() {
   static const std::vector<std::string> names = [] {

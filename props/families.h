@@ -24,6 +24,9 @@ struct GeneratedCase {
   std::string scale;           ///< unit, small, large, ratio
 };
 
+/// The eight corners of the box [-hx, hx] x [-hy, hy] x [-hz, hz].
+std::vector<Vec3> box_corners(double hx, double hy, double hz);
+
 /// Every hull family's name, in the order the generator picks them from.
 const std::vector<std::string>& hull_family_names();
 /// Every placement family's name.

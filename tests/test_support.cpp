@@ -1,14 +1,10 @@
 #include "test_support.h"
 
+#include "families.h"
+
 namespace mfz::test {
 
-std::vector<Vec3> box_points(double hx, double hy, double hz) {
-  std::vector<Vec3> points;
-  for (double sx : {-1.0, 1.0})
-    for (double sy : {-1.0, 1.0})
-      for (double sz : {-1.0, 1.0}) points.emplace_back(sx * hx, sy * hy, sz * hz);
-  return points;
-}
+std::vector<Vec3> box_points(double hx, double hy, double hz) { return props::box_corners(hx, hy, hz); }
 
 std::vector<Vec3> tetrahedron_points() { return {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}; }
 
