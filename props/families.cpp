@@ -14,13 +14,26 @@ int pick(int low, int high) { return *rc::gen::inRange(low, high + 1); }
 // A number with few digits in [-1, 1].
 double digits(int resolution = 100) { return pick(-resolution, resolution) / static_cast<double>(resolution); }
 
-Vec3 digit_vector(int resolution = 100) { return {digits(resolution), digits(resolution), digits(resolution)}; }
+// Every multi-pick helper draws in a fixed order: function arguments are
+// evaluated in an unspecified order (g++ and clang++ differ), and a seed must
+// give the same case on every compiler.
+Vec3 digit_vector(int resolution = 100) {
+  const double x = digits(resolution), y = digits(resolution), z = digits(resolution);
+  return {x, y, z};
+}
+
+// A box with half sides k / divisor, k in [low, high] drawn x, y, z in order.
+std::vector<Vec3> picked_box(int low, int high, double divisor) {
+  const double hx = pick(low, high) / divisor, hy = pick(low, high) / divisor, hz = pick(low, high) / divisor;
+  return box_corners(hx, hy, hz);
+}
 
 // A rotation that shrinks towards the identity: a whole number of degrees
 // about an axis with small integer coordinates.
 Quat any_rotation() {
   const int degrees = pick(0, 359);
-  const Vec3 axis(pick(-3, 3), pick(-3, 3), pick(-3, 3));
+  const int ax = pick(-3, 3), ay = pick(-3, 3), az = pick(-3, 3);
+  const Vec3 axis(ax, ay, az);
   if (degrees == 0 || axis.isZero()) return Quat::Identity();
   return Quat(Eigen::AngleAxisd(degrees * M_PI / 180, axis.normalized()));
 }
@@ -73,23 +86,40 @@ using Family = std::vector<Vec3> (*)();
 const std::vector<std::pair<std::string, Family>>& families() {
   static const std::vector<std::pair<std::string, Family>> all = {
       {"cube", [] { return box_corners(0.5, 0.5, 0.5); }},
-      {"box", [] { return box_corners(pick(1, 10) / 10.0, pick(1, 10) / 10.0, pick(1, 10) / 10.0); }},
+      {"box", [] { return picked_box(1, 10, 10.0); }},
       {"slab", [] { return box_corners(0.5, pick(5, 10) / 20.0, 0.5e-3); }},
       {"needle", [] { return box_corners(0.5e-3, 0.5e-3, 0.5); }},
-      {"anisotropic-box", [] { return box_corners(pick(1, 100) / 100.0, pick(1, 100) / 100.0, pick(1, 100) / 100.0); }},
+      {"anisotropic-box", [] { return picked_box(1, 100, 100.0); }},
       {"tetrahedron", [] { return std::vector<Vec3>{{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}; }},
-      {"random-tetrahedron", [] { return std::vector<Vec3>{digit_vector(), digit_vector(), digit_vector(), digit_vector()}; }},
+      {"random-tetrahedron", [] {
+         std::vector<Vec3> points;
+         for (int k = 0; k < 4; ++k) points.push_back(digit_vector());
+         return points;
+       }},
       {"sphere-cloud", [] { return on_sphere(Vec3(1, 1, 1)); }},
       {"box-cloud", [] { return cloud(100); }},
-      {"ellipsoid-cloud", [] { return on_sphere(Vec3(1, pick(1, 10) / 10.0, pick(1, 10) / 10.0)); }},
-      {"prism", [] { return prism(pick(3, 64), pick(1, 20) / 10.0, 1); }},
-      {"cylinder", [] { return prism(pick(24, 64), pick(1, 20) / 10.0, 1); }},
+      {"ellipsoid-cloud", [] {
+         const double b = pick(1, 10) / 10.0, c = pick(1, 10) / 10.0;
+         return on_sphere(Vec3(1, b, c));
+       }},
+      {"prism", [] {
+         const int sides = pick(3, 64);
+         return prism(sides, pick(1, 20) / 10.0, 1);
+       }},
+      {"cylinder", [] {
+         const int sides = pick(24, 64);
+         return prism(sides, pick(1, 20) / 10.0, 1);
+       }},
       {"pyramid", [] {
          std::vector<Vec3> points = regular_polygon(pick(3, 64), 1, 0);
          points.emplace_back(0, 0, pick(1, 20) / 10.0);
          return points;
        }},
-      {"frustum", [] { return prism(pick(3, 64), pick(1, 20) / 10.0, pick(1, 20) / 10.0); }},
+      {"frustum", [] {
+         const int sides = pick(3, 64);
+         const double height = pick(1, 20) / 10.0, top = pick(1, 20) / 10.0;
+         return prism(sides, height, top);
+       }},
       {"duplicates", [] {
          std::vector<Vec3> points = cloud(10);
          const size_t original = points.size();
@@ -209,7 +239,8 @@ void place_along(const Placed& a, Placed& b, const Vec3& d, double overlap, doub
   const double reach_b = -support(b.world(), -d);
   const Vec3 side = any_perpendicular(d);
   const Vec3 other = d.cross(side);
-  b.pose.position = (reach_a - reach_b - overlap) * d + size * (digits(10) * 0.3 * side + digits(10) * 0.3 * other);
+  const double along_side = digits(10), along_other = digits(10);
+  b.pose.position = (reach_a - reach_b - overlap) * d + size * (along_side * 0.3 * side + along_other * 0.3 * other);
 }
 
 }  // namespace
