@@ -104,7 +104,7 @@ TEST(ClippingGenerator, TipOfAIntoFaceOfBFlipsReferenceAndIncident) {
   expect_all_invariants_hold(run);
 }
 
-TEST(ClippingGenerator, EdgeCrossingEdgeFindsTheEdgeAxisAndItsDepth) {
+TEST(ClippingGenerator, EdgeCrossingEdgeGivesOneContactWhereTheEdgesCross) {
   const double half_diagonal = std::sqrt(2.0);
   const CaseRun run = run_builtin(make_case(box_points(1, 1, 1), {Vec3::Zero(), about(Vec3::UnitY(), M_PI / 4)},
                                             box_points(1, 1, 1),
@@ -112,7 +112,10 @@ TEST(ClippingGenerator, EdgeCrossingEdgeFindsTheEdgeAxisAndItsDepth) {
   EXPECT_EQ(run.manifold.colliding, 1);
   EXPECT_VEC_NEAR(to_vec(run.manifold.normal), Vec3(0, 0, 1), kExact);
   EXPECT_NEAR(run.manifold.penetration, -0.1, kExact);
-  EXPECT_GE(run.manifold.contact_count, 1);
+  // A's top edge runs along y at x = 0, B's bottom edge along x at y = 0: they
+  // cross above the origin, A's at height sqrt(2), B's 0.1 below it (F3).
+  expect_contacts(run.manifold, {{Vec3(0, 0, half_diagonal), Vec3(0, 0, half_diagonal - 0.1), -0.1}});
+  expect_all_invariants_hold(run);
 }
 
 TEST(ClippingGenerator, SeparatedBoxesAreNotColliding) {
