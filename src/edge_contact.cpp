@@ -15,26 +15,25 @@ struct Segment {
   Vec3 from, to;
 };
 
-// Of the edges at the vertex furthest along `direction`, the one most nearly
-// parallel to `along` (the edge that made the SAT axis, or one parallel to
-// it). False when none is within a small angle of it.
-bool supporting_edge(const PosedHull& hull, const Vec3& direction, const Vec3& along, Segment& edge) {
-  const int tip = hull.support_vertex(direction);
-  const Vec3 unit_along = along.normalized();
-  double best = 0;
+// The supporting edge along `direction`: of the edges perpendicular to it,
+// the one that reaches furthest along it. It is defined by the axis alone:
+// SAT may have met the axis through any edge perpendicular to it, and several
+// can be (F6: a frustum's polygon edges), so the edge that made the axis is
+// not the one to use. False when no edge is perpendicular to `direction`.
+bool supporting_edge(const PosedHull& hull, const Vec3& direction, Segment& edge) {
+  double best = -std::numeric_limits<double>::infinity();
   for (int f = 0; f < hull.face_count(); ++f) {
     const int n = hull.face_size(f);
     for (int k = 0; k < n; ++k) {
-      if (hull.face_vertex(f, k) != tip) continue;
-      const Vec3 from = hull.world_vertex(tip), to = hull.world_face_point(f, (k + 1) % n);
+      const Vec3 from = hull.world_face_point(f, k), to = hull.world_face_point(f, (k + 1) % n);
       const Vec3 d = to - from;
       const double length = d.norm();
-      if (!(length > 0)) continue;
-      const double alignment = std::abs(d.dot(unit_along)) / length;
-      if (alignment > best) best = alignment, edge = {from, to};
+      if (!(length > 0) || std::abs(d.dot(direction)) > tol::kEdgeAlongAxis * length) continue;
+      const double reach = std::min(direction.dot(from), direction.dot(to));
+      if (reach > best) best = reach, edge = {from, to};
     }
   }
-  return best >= 1 - 1e-9;
+  return best > -std::numeric_limits<double>::infinity();
 }
 
 // Closest points of two segments: Ericson, Real-Time Collision Detection, 5.1.9.
@@ -57,14 +56,17 @@ bool no_edge_contact(const PosedHull&, const PosedHull&, const SatResult&, mfz_m
 
 bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out) {
   Segment on_a, on_b;
-  if (!supporting_edge(a, sat.normal, sat.edge_a, on_a) || !supporting_edge(b, -sat.normal, sat.edge_b, on_b))
+  if (!supporting_edge(a, sat.normal, on_a) || !supporting_edge(b, -sat.normal, on_b))
     return false;  // no edge supports the axis: fall back to clipping faces
   Vec3 point_a, point_b;
   closest_points(on_a, on_b, point_a, point_b);
   // Only edges whose shadows along n cross make an edge contact; otherwise
   // the axis came from a near-tie with a face axis: clip faces instead.
+  // The tolerance adds the rounding of world coordinates far from the origin.
   const double reach = (on_a.to - on_a.from).norm() + (on_b.to - on_b.from).norm();
-  if (!((point_b - (point_a - sat.depth * sat.normal)).norm() <= tol::kEdgesCross * reach)) return false;
+  const double extent = on_a.from.cwiseAbs().maxCoeff() + on_b.from.cwiseAbs().maxCoeff();
+  const double slack = tol::kEdgesCross * reach + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
+  if (!((point_b - (point_a - sat.depth * sat.normal)).norm() <= slack)) return false;
   // point_on_b = point_on_a + p n exactly; the edge's own closest point
   // point_b agrees with it to rounding, because n is the edges' common normal.
   const double p = -sat.depth;

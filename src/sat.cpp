@@ -97,7 +97,6 @@ SatResult sat_with(const PosedHull& a, const PosedHull& b, bool fixed) {
         return true;
       }
       best = candidate;
-      best.edge_a = edge_a, best.edge_b = edge_b;
       return !separated;
     });
     return !separated;

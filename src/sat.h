@@ -22,7 +22,6 @@ struct SatResult {
   AxisKind kind = AxisKind::face_a;
   int feature_a = -1;  ///< face of A, or edge of A (index into its unique edges in loop order)
   int feature_b = -1;  ///< face of B, or edge of B
-  Vec3 edge_a = Vec3::Zero(), edge_b = Vec3::Zero();  ///< world edge directions of an edge-edge axis
 };
 
 /// Overlap of A and B along a unit world axis, and which way B lies.

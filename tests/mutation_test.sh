@@ -7,7 +7,7 @@ set -u
 manifuzz=$1 plugins=$2 mutants=${3//;/ }
 seed=${MUTATION_SEED:-20261121}
 budget=${MUTATION_CASES:-3000}
-correct_budget=${CORRECT_CASES:-200}
+correct_budget=${CORRECT_CASES:-1000}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 caught=0 total=0 failures=0 detections=()
