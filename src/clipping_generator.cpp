@@ -60,7 +60,7 @@ int gather_patch(const PosedHull& hull, int face, int* members) {
     for (int k = 0; k < n; ++k) {
       const int g = hull.face_across(hull.face_vertex(f, k), hull.face_vertex(f, (k + 1) % n));
       if (g < 0 || count == kMaxPatchFaces || contains(members, count, g)) continue;
-      if (hull.world_face_normal(g).dot(normal) >= tol::kCoplanarDot) members[count++] = g;
+      if (coplanar_normals(hull.world_face_normal(g), normal)) members[count++] = g;
     }
   }
   return count;
@@ -187,6 +187,7 @@ ClippingSteps seed_steps() {
   steps.face_polygon = face_loop;
   steps.edge_contact = no_edge_contact;
   steps.sat = run_seed_sat;
+  steps.significant_face_from_sat = false;
   return steps;
 }
 
@@ -220,6 +221,8 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   int support_a = -1, support_b = -1;
   ClipFace face_a{&a, significant_face(a, n, support_a), {}};
   ClipFace face_b{&b, significant_face(b, -n, support_b), {}};
+  if (steps.significant_face_from_sat && sat.kind == AxisKind::face_a) face_a.index = sat.feature_a;
+  if (steps.significant_face_from_sat && sat.kind == AxisKind::face_b) face_b.index = sat.feature_b;
   if (trace) trace->face_a = face_a.index, trace->face_b = face_b.index, trace->support_a = support_a,
              trace->support_b = support_b;
   if (face_a.index < 0 || face_b.index < 0) return 1;  // a vertex in no face: not a hull

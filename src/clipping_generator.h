@@ -41,6 +41,10 @@ struct ClipFace {
 struct ClippingSteps {
   /// The separating-axis test.
   SatResult (*sat)(const PosedHull& a, const PosedHull& b) = run_sat;
+  /// F8: on a face axis, that face is its hull's significant face (the seed
+  /// finds both significant faces from the support vertex, which can land on
+  /// a neighbouring face).
+  bool significant_face_from_sat = true;
   /// The world polygon of a significant face.
   void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
   /// True when B's significant face is the reference face.

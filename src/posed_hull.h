@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "manifuzz/abi.h"
+#include "tolerances.h"
 #include "vec.h"
 
 namespace mfz {
@@ -15,6 +16,11 @@ struct Interval {
   double min = std::numeric_limits<double>::infinity();
   double max = -std::numeric_limits<double>::infinity();
 };
+
+/// True when two unit face normals belong to one plane (tol::kCoplanarSine).
+inline bool coplanar_normals(const Vec3& n1, const Vec3& n2) {
+  return n1.dot(n2) > 0 && n1.cross(n2).norm() <= tol::kCoplanarSine;
+}
 
 /// World vertices are cached on the stack for hulls up to this size (larger
 /// hulls are rotated on demand), so SAT's projections are plain dot products.

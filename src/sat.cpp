@@ -1,6 +1,8 @@
 #include "sat.h"
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "tolerances.h"
 
@@ -26,20 +28,32 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 namespace {
 
 // Tries one candidate axis (unit length). Returns false when it separates.
-// An edge axis must beat a face axis by tol::kEdgeAxisBias of the extent.
+// fixed: an edge axis must beat a face axis by tol::kEdgeAxisBias of the
+// extent (F3), and a face normal counts for depth only in the direction of a
+// face of the Minkowski difference: A's outward, B's inward (F7). Reversed,
+// a face normal still proves separation, but the hull's support along it is
+// an edge or a vertex, not that face, and the penetration axis lies among
+// the other candidates.
 bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind kind, int fa, int fb,
-              SatResult& best, bool prefer_faces) {
+              SatResult& best, bool fixed) {
   const Interval ia = a.project(axis), ib = b.project(axis);
   const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;
-  const bool b_along_axis = b_above <= b_below;
-  const double overlap = b_along_axis ? b_above : b_below;
-  if (overlap < 0) {
-    best = {true, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
+  if (b_above < 0 || b_below < 0) {
+    const bool along = b_above <= b_below;
+    best = {true, along ? axis : Vec3(-axis), along ? b_above : b_below, kind, fa, fb};
     return false;
   }
-  const bool edge_after_face = prefer_faces && kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
-  const double margin =
-      edge_after_face ? tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) : 0.0;
+  bool b_along_axis = b_above <= b_below;
+  if (fixed && kind == AxisKind::face_a) b_along_axis = true;
+  if (fixed && kind == AxisKind::face_b) b_along_axis = false;
+  const double overlap = b_along_axis ? b_above : b_below;
+  // The margin adds the world frame's rounding (F9): far from the origin an
+  // edge pair along a face normal can come out smaller by rounding alone.
+  const bool edge_after_face = fixed && kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
+  const double world = std::max({std::abs(ia.min), std::abs(ia.max), std::abs(ib.min), std::abs(ib.max)});
+  const double margin = edge_after_face ? tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) +
+                                              tol::kWorldUlps * std::numeric_limits<double>::epsilon() * world
+                                        : 0.0;
   if (overlap < best.depth - margin) best = {false, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
   return true;
 }
@@ -63,7 +77,7 @@ void for_each_edge(const PosedHull& hull, Visit&& visit) {
 // Checked only for an axis about to win, since finding the other face scans loops.
 bool is_flat_edge(const PosedHull& hull, int v0, int v1, int face) {
   const int other = hull.face_across(v0, v1);
-  return other >= 0 && hull.world_face_normal(other).dot(hull.world_face_normal(face)) >= tol::kCoplanarDot;
+  return other >= 0 && coplanar_normals(hull.world_face_normal(other), hull.world_face_normal(face));
 }
 
 }  // namespace

@@ -57,10 +57,12 @@ inline constexpr double kHullConvexity = 1e-9;
 /// and is skipped (guarded normalisation).
 inline constexpr double kParallelEdges = 1e-9;
 
-/// Generator: faces whose unit normals' dot product is at least this lie in one
-/// plane (an angle below 1.4e-6 rad); a triangulated face's triangles share
-/// the face's normal exactly.
-inline constexpr double kCoplanarDot = 1 - 1e-12;
+/// Generator: two faces lie in one plane when the sine of the angle between
+/// their normals is at most this (and the normals point the same way). A
+/// patch of faces that far apart bends by at most 1e-11 of its size, below
+/// on-surface's tolerance (F7); a triangulated face's triangles share their
+/// normal exactly. A cosine test cannot say this: 1 - cos underflows.
+inline constexpr double kCoplanarSine = 1e-11;
 /// Generator: an edge-edge axis replaces the best face axis only when its
 /// overlap is smaller by more than this fraction of the hulls' extent along
 /// it, so that a tie (to rounding) keeps the face contact and its polygon.

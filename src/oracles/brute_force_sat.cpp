@@ -16,9 +16,14 @@ double directed_overlap(const std::vector<Vec3>& world_a, const std::vector<Vec3
 
 namespace {
 
+// A face of A counts outward and a face of B inward only: those are the faces
+// of the Minkowski difference (reversed, a face normal meets an edge or a
+// vertex of its hull). Edge pairs count either way.
 void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, std::vector<RankedAxis>& out) {
   const double along = directed_overlap(s.world_a, s.world_b, axis);
   const double against = directed_overlap(s.world_a, s.world_b, -axis);
+  if (kind == AxisKind::face_a) return out.push_back({axis, along, kind, fa, fb});
+  if (kind == AxisKind::face_b) return out.push_back({-axis, against, kind, fa, fb});
   if (along <= against)
     out.push_back({axis, along, kind, fa, fb});
   else
@@ -52,11 +57,21 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
 
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   if (ranked.empty()) return false;
-  // Axes within a few degrees of each other lead to the same manifold kind;
-  // only a genuinely different direction makes a tie.
-  const double same_direction = 0.999;
-  for (size_t k = 1; k < ranked.size() && ranked[k].overlap - ranked[0].overlap <= tie; ++k)
-    if (ranked[k].normal.dot(ranked[0].normal) < same_direction) return true;
+  // CONTRACT.md's ties: two candidates within `tie` that can lead to other
+  // manifolds: axes pointing other ways (a face axis and a slightly tilted
+  // edge axis among them: a polygon or one point), and two faces of one hull
+  // (two reference polygons). Candidates along one direction are one face of
+  // the Minkowski difference: a face of A and a parallel face of B clip to the
+  // same region, an edge pair along a face normal lies in those faces, and
+  // parallel edge pairs give one axis. None of those is a tie.
+  const RankedAxis& best = ranked[0];
+  const double same_direction = 1 - 1e-12;
+  for (size_t k = 1; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
+    const RankedAxis& other = ranked[k];
+    if (other.normal.dot(best.normal) < same_direction) return true;
+    if (other.kind == best.kind && other.kind == AxisKind::face_a && other.feature_a != best.feature_a) return true;
+    if (other.kind == best.kind && other.kind == AxisKind::face_b && other.feature_b != best.feature_b) return true;
+  }
   return false;
 }
 

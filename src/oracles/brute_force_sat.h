@@ -17,7 +17,7 @@ namespace mfz {
 double directed_overlap(const std::vector<Vec3>& world_a, const std::vector<Vec3>& world_b, const Vec3& n);
 
 struct RankedAxis {
-  Vec3 normal;  ///< unit, oriented from A to B (the smaller of the two overlaps)
+  Vec3 normal;  ///< unit, from A to B: a face of A outward, of B inward, an edge pair the smaller way
   double overlap = 0;
   AxisKind kind = AxisKind::face_a;
   int feature_a = -1, feature_b = -1;
@@ -26,8 +26,9 @@ struct RankedAxis {
 /// Every candidate axis with its overlap, smallest overlap first.
 std::vector<RankedAxis> rank_sat_axes(const Scene& scene);
 
-/// True when an axis whose direction differs from the best one's by more than
-/// a few degrees has an overlap within `tie` of the minimum.
+/// True when another candidate has an overlap within `tie` of the minimum and
+/// could lead to another manifold: another kind of axis, another face, or
+/// another direction (CONTRACT.md, "Ties").
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie);
 
 }  // namespace mfz
