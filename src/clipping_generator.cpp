@@ -8,18 +8,63 @@
 
 namespace mfz {
 
-int significant_face(const PosedHull& hull, const Vec3& direction, int& support) {
+namespace {
+
+constexpr int kMaxTiedFaces = 8;
+
+// F10's slack: within it of the furthest, a vertex is as far. The hull's
+// extent along the direction sets the scale, the world coordinates the rounding.
+double furthest_slack(const PosedHull& hull, const Vec3& direction, double furthest) {
+  double nearest = furthest;
+  for (int i = 0; i < hull.vertex_count(); ++i) nearest = std::min(nearest, direction.dot(hull.world_vertex(i)));
+  return tol::kTie * (furthest - nearest) +
+         tol::kWorldUlps * std::numeric_limits<double>::epsilon() * std::abs(furthest);
+}
+
+// Faces that hold the support vertex, or with over_ties any vertex as far.
+template <class Visit>
+void faces_at_support(const PosedHull& hull, const Vec3& direction, int support, bool over_ties, Visit&& visit) {
+  const double furthest = direction.dot(hull.world_vertex(support));
+  const double slack = over_ties ? furthest_slack(hull, direction, furthest) : -1;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    bool contains = false;
+    for (int k = 0; k < hull.face_size(f) && !contains; ++k) {
+      const int v = hull.face_vertex(f, k);
+      contains = v == support || direction.dot(hull.world_vertex(v)) >= furthest - slack;
+    }
+    if (contains) visit(f, hull.world_face_normal(f).dot(direction));
+  }
+}
+
+// Equal to rounding: two tied faces clip their shared edge from both ends.
+bool holds_point(const ClipPolygon& points, const Vec3& p) {
+  for (int k = 0; k < points.size(); ++k)
+    if ((points[k] - p).norm() <= 1e-12 * (1 + p.cwiseAbs().maxCoeff())) return true;
+  return false;
+}
+
+}  // namespace
+
+int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties) {
   support = hull.support_vertex(direction);
   int best = -1;
   double most_parallel = -std::numeric_limits<double>::infinity();
-  for (int f = 0; f < hull.face_count(); ++f) {
-    bool contains = false;
-    for (int k = 0; k < hull.face_size(f) && !contains; ++k) contains = hull.face_vertex(f, k) == support;
-    if (!contains) continue;
-    const double alignment = hull.world_face_normal(f).dot(direction);
+  faces_at_support(hull, direction, support, over_ties, [&](int f, double alignment) {
     if (alignment > most_parallel) most_parallel = alignment, best = f;
-  }
+  });
   return best;
+}
+
+int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity) {
+  const int support = hull.support_vertex(direction);
+  double most_parallel = -std::numeric_limits<double>::infinity();
+  faces_at_support(hull, direction, support, true,
+                   [&](int, double alignment) { most_parallel = std::max(most_parallel, alignment); });
+  int count = 0;
+  faces_at_support(hull, direction, support, true, [&](int f, double alignment) {
+    if (alignment >= most_parallel - tol::kTie && count < capacity) out[count++] = f;
+  });
+  return count;
 }
 
 namespace {
@@ -188,6 +233,7 @@ ClippingSteps seed_steps() {
   steps.edge_contact = no_edge_contact;
   steps.sat = run_seed_sat;
   steps.significant_face_from_sat = false;
+  steps.significant_face_over_ties = false;
   return steps;
 }
 
@@ -219,8 +265,8 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   }
 
   int support_a = -1, support_b = -1;
-  ClipFace face_a{&a, significant_face(a, n, support_a), {}};
-  ClipFace face_b{&b, significant_face(b, -n, support_b), {}};
+  ClipFace face_a{&a, significant_face(a, n, support_a, steps.significant_face_over_ties), {}};
+  ClipFace face_b{&b, significant_face(b, -n, support_b, steps.significant_face_over_ties), {}};
   if (steps.significant_face_from_sat && sat.kind == AxisKind::face_a) face_a.index = sat.feature_a;
   if (steps.significant_face_from_sat && sat.kind == AxisKind::face_b) face_b.index = sat.feature_b;
   if (trace) trace->face_a = face_a.index, trace->face_b = face_b.index, trace->support_a = support_a,
@@ -247,19 +293,30 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   if (trace) trace->flipped = flipped;
   ClipFace& reference = flipped ? face_b : face_a;
   const ClipFace& incident = flipped ? face_a : face_b;
-  ClipPolygon reference_polygon, polygon;
+  ClipPolygon reference_polygon, polygon, clipped;
   steps.face_polygon(*reference.hull, reference.index, reference_polygon);
-  steps.face_polygon(*incident.hull, incident.index, polygon);
   reference.polygon = &reference_polygon;
-  // Each side plane can add one point: refuse rather than overflow.
-  if (polygon.size() + reference_polygon.size() >= kMaxPolygonVertices) return 1;
-  record(trace, "incident face", polygon);
-  if (!steps.clip_to_sides(reference, polygon, trace)) return 1;
+  // F11: equally aligned incident faces (a symmetric corner) are all clipped
+  // and their contacts joined: picking one would leave the choice to rounding.
+  int incident_faces[kMaxTiedFaces] = {incident.index};
+  int tied = 1;
+  if (steps.significant_face_over_ties)
+    tied = tied_significant_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
   const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
-  remove_points_outside(polygon, Plane{reference.normal, reference.normal.dot(on_reference)});
-  record(trace, "points above the reference plane removed", polygon);
-  reduce_polygon(polygon, MFZ_MAX_CONTACTS);
-  steps.emit_contacts(reference, polygon, n, flipped, out);
+  const Plane reference_plane{reference.normal, reference.normal.dot(on_reference)};
+  for (int i = 0; i < tied; ++i) {
+    steps.face_polygon(*incident.hull, incident_faces[i], polygon);
+    // Each side plane can add one point: refuse rather than overflow.
+    if (polygon.size() + reference_polygon.size() >= kMaxPolygonVertices) return 1;
+    record(trace, "incident face " + std::to_string(incident_faces[i]), polygon);
+    if (!steps.clip_to_sides(reference, polygon, trace)) return 1;
+    remove_points_outside(polygon, reference_plane);
+    record(trace, "points above the reference plane removed", polygon);
+    for (int k = 0; k < polygon.size(); ++k)
+      if (!holds_point(clipped, polygon[k]) && !clipped.push(polygon[k])) return 1;
+  }
+  reduce_polygon(clipped, MFZ_MAX_CONTACTS);
+  steps.emit_contacts(reference, clipped, n, flipped, out);
   return 0;
 }
 

@@ -45,6 +45,11 @@ struct ClippingSteps {
   /// finds both significant faces from the support vertex, which can land on
   /// a neighbouring face).
   bool significant_face_from_sat = true;
+  /// F10: a significant face is chosen among the faces of every vertex
+  /// equally far along the direction (within rounding), not only of the one
+  /// that rounding makes furthest; F11: equally aligned incident faces are all
+  /// clipped. Either way rounding does not choose the manifold.
+  bool significant_face_over_ties = true;
   /// The world polygon of a significant face.
   void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
   /// True when B's significant face is the reference face.
@@ -94,9 +99,15 @@ int32_t generate_clipping_manifold(const mfz_hull& a, const mfz_pose& pose_a, co
                                    const mfz_pose& pose_b, mfz_manifold& out, ClipTrace* trace = nullptr,
                                    const ClippingSteps& steps = ClippingSteps());
 
+/// The faces `significant_face` could pick with over_ties, all equally
+/// aligned within tol::kTie (F11); at most `capacity` into `out`.
+int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity);
+
 /// The face of `hull` the seed calls significant for `direction`: of the faces
 /// that contain the vertex furthest along `direction`, the one whose normal is
 /// most parallel to it (first of equals). Sets `support` to that vertex.
-int significant_face(const PosedHull& hull, const Vec3& direction, int& support);
+/// With `over_ties`, the faces of every vertex within rounding of the
+/// furthest compete (F10).
+int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties = false);
 
 }  // namespace mfz

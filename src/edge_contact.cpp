@@ -15,11 +15,12 @@ struct Segment {
   Vec3 from, to;
 };
 
-// The supporting edge along `direction`: of the edges perpendicular to it,
-// the one that reaches furthest along it. It is defined by the axis alone:
-// SAT may have met the axis through any edge perpendicular to it, and several
-// can be (F6: a frustum's polygon edges), so the edge that made the axis is
-// not the one to use. False when no edge is perpendicular to `direction`.
+// The supporting edge along `direction`: the edge whose nearer end reaches
+// furthest along it. It is defined by the axis alone: SAT may have met the
+// axis through any edge perpendicular to it, and several can be (F6: a
+// frustum's polygon edges), so the edge that made the axis is not the one to
+// use; nor is a test for perpendicular edges, which a nearly parallel twin 1e-9
+// rad off fails depending on which of the two made the axis (F12).
 bool supporting_edge(const PosedHull& hull, const Vec3& direction, Segment& edge) {
   double best = -std::numeric_limits<double>::infinity();
   for (int f = 0; f < hull.face_count(); ++f) {
@@ -28,7 +29,7 @@ bool supporting_edge(const PosedHull& hull, const Vec3& direction, Segment& edge
       const Vec3 from = hull.world_face_point(f, k), to = hull.world_face_point(f, (k + 1) % n);
       const Vec3 d = to - from;
       const double length = d.norm();
-      if (!(length > 0) || std::abs(d.dot(direction)) > tol::kEdgeAlongAxis * length) continue;
+      if (!(length > 0)) continue;
       const double reach = std::min(direction.dot(from), direction.dot(to));
       if (reach > best) best = reach, edge = {from, to};
     }

@@ -67,9 +67,6 @@ inline constexpr double kCoplanarSine = 1e-11;
 /// overlap is smaller by more than this fraction of the hulls' extent along
 /// it, so that a tie (to rounding) keeps the face contact and its polygon.
 inline constexpr double kEdgeAxisBias = 1e-9;
-/// Generator: an edge is perpendicular to an edge-edge axis when the cosine of
-/// their angle is below this (the axis is a cross product: 0 up to rounding).
-inline constexpr double kEdgeAlongAxis = 1e-9;
 /// Generator: the supporting edges of an edge-edge axis make a contact only if
 /// their closest points lie along n to within this fraction of their lengths.
 inline constexpr double kEdgesCross = 1e-9;

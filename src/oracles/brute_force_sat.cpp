@@ -66,11 +66,18 @@ bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   // parallel edge pairs give one axis. None of those is a tie.
   const RankedAxis& best = ranked[0];
   const double same_direction = 1 - 1e-12;
-  for (size_t k = 1; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
+  int face_a = -1, face_b = -1;
+  for (size_t k = 0; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
     const RankedAxis& other = ranked[k];
     if (other.normal.dot(best.normal) < same_direction) return true;
-    if (other.kind == best.kind && other.kind == AxisKind::face_a && other.feature_a != best.feature_a) return true;
-    if (other.kind == best.kind && other.kind == AxisKind::face_b && other.feature_b != best.feature_b) return true;
+    if (other.kind == AxisKind::face_a) {
+      if (face_a >= 0 && face_a != other.feature_a) return true;
+      face_a = other.feature_a;
+    }
+    if (other.kind == AxisKind::face_b) {
+      if (face_b >= 0 && face_b != other.feature_b) return true;
+      face_b = other.feature_b;
+    }
   }
   return false;
 }
