@@ -215,13 +215,22 @@ void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped
   }
 }
 
-bool seed_reference_is_b(const Vec3& n, const ClipFace& face_a, const ClipFace& face_b) {
-  return std::abs(n.dot(face_a.normal)) < std::abs(n.dot(face_b.normal));
+bool seed_reference_is_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
+  return std::abs(sat.normal.dot(face_a.normal)) < std::abs(sat.normal.dot(face_b.normal));
+}
+
+// F13: the seed's "more parallel" rule ties when the other face is parallel
+// to rounding, and then the order of the arguments chooses, which swapping A
+// and B changes. The face SAT found is the reference face.
+bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
+  if (sat.kind == AxisKind::face_a) return false;
+  if (sat.kind == AxisKind::face_b) return true;
+  return seed_reference_is_b(sat, face_a, face_b);
 }
 
 ClippingSteps::ClippingSteps()
     : face_polygon(coplanar_patch),
-      reference_is_b(seed_reference_is_b),
+      reference_is_b(sat_face_is_reference),
       clip_to_sides(clip_to_reference_prism),
       edge_contact(closest_points_of_edges),
       emit_contacts(emit_clipped_contacts) {}
@@ -234,6 +243,7 @@ ClippingSteps seed_steps() {
   steps.sat = run_seed_sat;
   steps.significant_face_from_sat = false;
   steps.significant_face_over_ties = false;
+  steps.reference_is_b = seed_reference_is_b;
   return steps;
 }
 
@@ -289,7 +299,7 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
     return 0;
   }
 
-  const bool flipped = steps.reference_is_b(n, face_a, face_b);
+  const bool flipped = steps.reference_is_b(sat, face_a, face_b);
   if (trace) trace->flipped = flipped;
   ClipFace& reference = flipped ? face_b : face_a;
   const ClipFace& incident = flipped ? face_a : face_b;

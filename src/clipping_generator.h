@@ -53,7 +53,7 @@ struct ClippingSteps {
   /// The world polygon of a significant face.
   void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
   /// True when B's significant face is the reference face.
-  bool (*reference_is_b)(const Vec3& n, const ClipFace& face_a, const ClipFace& face_b);
+  bool (*reference_is_b)(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
   /// Clips the incident polygon against the reference face's side planes;
   /// false if a buffer would overflow.
   bool (*clip_to_sides)(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
@@ -82,7 +82,9 @@ bool no_edge_contact(const PosedHull& a, const PosedHull& b, const SatResult& sa
 bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
 
 /// The seed's rule: the significant face more parallel to n is the reference.
-bool seed_reference_is_b(const Vec3& n, const ClipFace& face_a, const ClipFace& face_b);
+bool seed_reference_is_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
+/// F13: on a face axis, that face is the reference face; otherwise the seed's rule.
+bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
 /// The seed's clip: Sutherland-Hodgman against the planes of the faces adjacent
 /// to the reference face. Wrong where those faces slope inwards (FINDINGS.md F1).
 bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);

@@ -221,8 +221,17 @@ InvariantCheck check_normal_agrees_with_epa(const Context& c) {
   if (o.touching) return skipped("normal-agrees-with-epa", "touching: EPA's direction is arbitrary");
   const double angle = std::acos(std::clamp(c.n.normalized().dot(o.ccd.epa_direction), -1.0, 1.0));
   if (angle <= tol::kEpaAngle) return measured("normal-agrees-with-epa", angle, tol::kEpaAngle, "angle to EPA (rad)");
-  // A tie: both axes are minimal, EPA's and n, each realising the depth.
+  // EPA's direction is only an oracle where it realises the exact depth
+  // itself: at small depths its depth can be right and its direction not.
   const double along_epa = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
+  if (std::abs(along_epa - o.exact.signed_depth) > tol_epa) {
+    std::ostringstream why;
+    why << "EPA's direction does not realise the exact depth: overlap along it " << along_epa << ", exact depth "
+        << o.exact.signed_depth;
+    return {"normal-agrees-with-epa", CheckStatus::oracle_disagreement, c.relative(std::abs(along_epa - o.exact.signed_depth)),
+            c.relative(tol_epa), why.str()};
+  }
+  // A tie: both axes are minimal, EPA's and n, each realising the depth.
   const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
   std::ostringstream detail;
   detail << "angle to EPA " << angle << " rad; overlap along EPA's direction " << along_epa << ", along n "

@@ -1,11 +1,11 @@
-// Bug: the reference face is the LESS parallel of the two significant faces.
+// Bug: reference and incident face are the wrong way round.
 #include "mutant_plugin.h"
 
 const char* const mutant::name = "mutant-wrong-reference-face";
 mfz::ClippingSteps mutant::steps() {
   mfz::ClippingSteps s;
-  s.reference_is_b = [](const mfz::Vec3& n, const mfz::ClipFace& a, const mfz::ClipFace& b) {
-    return !mfz::seed_reference_is_b(n, a, b);
+  s.reference_is_b = [](const mfz::SatResult& sat, const mfz::ClipFace& a, const mfz::ClipFace& b) {
+    return !mfz::sat_face_is_reference(sat, a, b);
   };
   return s;
 }
