@@ -72,9 +72,6 @@ ClippingSteps seed_steps();
 
 /// The seed's polygon: the face's own loop.
 void face_loop(const PosedHull& hull, int face, ClipPolygon& out);
-/// The boundary of the largest patch of coplanar faces around `face` (F2: a
-/// hull whose faces arrive triangulated still clips against the whole face).
-void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out);
 
 /// The seed: edge axes are clipped like face axes.
 bool no_edge_contact(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);

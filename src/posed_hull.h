@@ -3,6 +3,7 @@
 /// A hull of the C ABI seen in world space through its pose, without copying:
 /// the generator's hot path reads local vertices and rotates on demand, so a
 /// call allocates nothing whatever the hull's size.
+#include <cmath>
 #include <limits>
 
 #include "manifuzz/abi.h"

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "coplanar_patch.h"
 #include "tolerances.h"
 
 namespace mfz {
@@ -27,6 +28,18 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 
 namespace {
 
+// The area of the face's coplanar patch: a triangulated face weighs as much
+// as the whole face it came from.
+double face_area_of(const PosedHull& a, const PosedHull& b, const SatResult& axis) {
+  return axis.kind == AxisKind::face_a ? patch_area(a, axis.feature_a) : patch_area(b, axis.feature_b);
+}
+
+// Faces of the two hulls along one direction with overlaps within `slack`.
+bool parallel_face_tie(const PosedHull&, const PosedHull&, const SatResult& x, const SatResult& y, double slack) {
+  const bool faces = x.kind != AxisKind::edge_edge && y.kind != AxisKind::edge_edge && x.kind != y.kind;
+  return faces && std::abs(x.depth - y.depth) <= slack && coplanar_normals(x.normal, y.normal);
+}
+
 // Tries one candidate axis (unit length). Returns false when it separates.
 // fixed: an edge axis must beat a face axis by tol::kEdgeAxisBias of the
 // extent (F3), and a face normal counts for depth only in the direction of a
@@ -49,12 +62,22 @@ bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind
   const double overlap = b_along_axis ? b_above : b_below;
   // The margin adds the world frame's rounding (F9): far from the origin an
   // edge pair along a face normal can come out smaller by rounding alone.
-  const bool edge_after_face = fixed && kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
   const double world = std::max({std::abs(ia.min), std::abs(ia.max), std::abs(ib.min), std::abs(ib.max)});
-  const double margin = edge_after_face ? tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) +
-                                              tol::kWorldUlps * std::numeric_limits<double>::epsilon() * world
-                                        : 0.0;
-  if (overlap < best.depth - margin) best = {false, b_along_axis ? axis : Vec3(-axis), overlap, kind, fa, fb};
+  const double slack = tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) +
+                       tol::kWorldUlps * std::numeric_limits<double>::epsilon() * world;
+  const bool edge_after_face = fixed && kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
+  const Vec3 normal = b_along_axis ? axis : Vec3(-axis);
+  const SatResult candidate{false, normal, overlap, kind, fa, fb};
+  if (overlap < best.depth - (edge_after_face ? slack : 0.0)) {
+    // F14: a face that ties with a parallel face of the other hull only
+    // rounds below it; the larger face stays the reference, whatever the
+    // order of the hulls or the motion.
+    if (!(fixed && parallel_face_tie(a, b, candidate, best, slack) && face_area_of(a, b, candidate) <= face_area_of(a, b, best)))
+      best = candidate;
+  } else if (fixed && parallel_face_tie(a, b, candidate, best, slack) &&
+             face_area_of(a, b, candidate) > face_area_of(a, b, best)) {
+    best = candidate;
+  }
   return true;
 }
 

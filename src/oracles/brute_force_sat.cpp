@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "posed_hull.h"
 #include "tolerances.h"
 
 namespace mfz {
@@ -64,12 +65,13 @@ bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   // the Minkowski difference: a face of A and a parallel face of B clip to the
   // same region, an edge pair along a face normal lies in those faces, and
   // parallel edge pairs give one axis. None of those is a tie.
+  // "Along one direction" is the generator's coplanarity (a sine of 1e-11):
+  // a cosine test cannot see angles near 1e-6, as 1 - cos underflows.
   const RankedAxis& best = ranked[0];
-  const double same_direction = 1 - 1e-12;
   int face_a = -1, face_b = -1;
   for (size_t k = 0; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
     const RankedAxis& other = ranked[k];
-    if (other.normal.dot(best.normal) < same_direction) return true;
+    if (!coplanar_normals(other.normal, best.normal)) return true;
     if (other.kind == AxisKind::face_a) {
       if (face_a >= 0 && face_a != other.feature_a) return true;
       face_a = other.feature_a;
