@@ -11,7 +11,8 @@ namespace mfz {
 
 namespace {
 
-constexpr int kMaxTiedFaces = 8;
+// Enough for the apex of a 64-sided pyramid, whose side faces all tie (F15).
+constexpr int kMaxTiedFaces = 64;
 
 // F10's slack: within it of the furthest, a vertex is as far. The hull's
 // extent along the direction sets the scale, the world coordinates the rounding.
