@@ -273,6 +273,10 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   }
   reduce_polygon(clipped, MFZ_MAX_CONTACTS);
   steps.emit_contacts(reference, clipped, n, flipped, out);
+  // F16: where a face axis ties with an edge axis, the edges can cross just
+  // beyond the reference face (a fold of 1e-9 rad in the other hull), and the
+  // prism clips everything away. The supporting edges then give the contact.
+  if (out.contact_count == 0 && steps.edge_contact(a, b, sat, out) && trace) trace->edge_contact = true;
   return 0;
 }
 

@@ -15,26 +15,36 @@ struct Segment {
   Vec3 from, to;
 };
 
-// The supporting edge along `direction`: the edge whose nearer end reaches
-// furthest along it. It is defined by the axis alone: SAT may have met the
-// axis through any edge perpendicular to it, and several can be (F6: a
-// frustum's polygon edges), so the edge that made the axis is not the one to
-// use; nor is a test for perpendicular edges, which a nearly parallel twin 1e-9
-// rad off fails depending on which of the two made the axis (F12).
-bool supporting_edge(const PosedHull& hull, const Vec3& direction, Segment& edge) {
-  double best = -std::numeric_limits<double>::infinity();
-  for (int f = 0; f < hull.face_count(); ++f) {
-    const int n = hull.face_size(f);
-    for (int k = 0; k < n; ++k) {
-      const Vec3 from = hull.world_face_point(f, k), to = hull.world_face_point(f, (k + 1) % n);
-      const Vec3 d = to - from;
-      const double length = d.norm();
-      if (!(length > 0)) continue;
-      const double reach = std::min(direction.dot(from), direction.dot(to));
-      if (reach > best) best = reach, edge = {from, to};
+/// At most this many edges per hull compete for the supporting edge.
+constexpr int kMaxSupportingEdges = 32;
+
+// The supporting edges along `direction`: the edge whose nearer end reaches
+// furthest along it, and every edge within rounding of that reach. The axis
+// alone defines them: SAT may have met the axis through any edge
+// perpendicular to it, and several can be (F6: a frustum's polygon edges);
+// nor is a test for perpendicular edges right, which a nearly parallel twin
+// 1e-9 rad off fails depending on which of the two made the axis (F12).
+// Returns how many were written to `edges`.
+int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edges) {
+  double best = -std::numeric_limits<double>::infinity(), lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < hull.vertex_count(); ++i) lowest = std::min(lowest, direction.dot(hull.world_vertex(i)));
+  const auto each_edge = [&](auto&& visit) {
+    for (int f = 0; f < hull.face_count(); ++f) {
+      const int n = hull.face_size(f);
+      for (int k = 0; k < n; ++k) {
+        const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
+        if (v0 < v1) visit(hull.world_vertex(v0), hull.world_vertex(v1));
+      }
     }
-  }
-  return best > -std::numeric_limits<double>::infinity();
+  };
+  each_edge([&](const Vec3& from, const Vec3& to) { best = std::max(best, std::min(direction.dot(from), direction.dot(to))); });
+  const double slack = tol::kTie * (best - lowest) + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * std::abs(best);
+  int count = 0;
+  each_edge([&](const Vec3& from, const Vec3& to) {
+    if (count < kMaxSupportingEdges && std::min(direction.dot(from), direction.dot(to)) >= best - slack)
+      edges[count++] = {from, to};
+  });
+  return count;
 }
 
 // Closest points of two segments: Ericson, Real-Time Collision Detection, 5.1.9.
@@ -56,24 +66,35 @@ void closest_points(const Segment& s1, const Segment& s2, Vec3& c1, Vec3& c2) {
 bool no_edge_contact(const PosedHull&, const PosedHull&, const SatResult&, mfz_manifold&) { return false; }
 
 bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out) {
-  Segment on_a, on_b;
-  if (!supporting_edge(a, sat.normal, on_a) || !supporting_edge(b, -sat.normal, on_b))
-    return false;  // no edge supports the axis: fall back to clipping faces
-  Vec3 point_a, point_b;
-  closest_points(on_a, on_b, point_a, point_b);
+  Segment edges_a[kMaxSupportingEdges], edges_b[kMaxSupportingEdges];
+  const int count_a = supporting_edges(a, sat.normal, edges_a);
+  const int count_b = supporting_edges(b, -sat.normal, edges_b);
+  // Of the candidate pairs, the one whose closest points lie most nearly
+  // along n at the depth: the pair that crosses (F16).
+  double best_miss = std::numeric_limits<double>::infinity(), best_slack = 0;
+  Vec3 best_a = Vec3::Zero();
+  for (int i = 0; i < count_a; ++i)
+    for (int j = 0; j < count_b; ++j) {
+      Vec3 point_a, point_b;
+      closest_points(edges_a[i], edges_b[j], point_a, point_b);
+      const double miss = (point_b - (point_a - sat.depth * sat.normal)).norm();
+      if (miss < best_miss) {
+        // The tolerance adds the rounding of world coordinates far from the origin.
+        const double reach = (edges_a[i].to - edges_a[i].from).norm() + (edges_b[j].to - edges_b[j].from).norm();
+        const double extent = edges_a[i].from.cwiseAbs().maxCoeff() + edges_b[j].from.cwiseAbs().maxCoeff();
+        best_miss = miss, best_a = point_a;
+        best_slack = tol::kEdgesCross * reach + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
+      }
+    }
   // Only edges whose shadows along n cross make an edge contact; otherwise
   // the axis came from a near-tie with a face axis: clip faces instead.
-  // The tolerance adds the rounding of world coordinates far from the origin.
-  const double reach = (on_a.to - on_a.from).norm() + (on_b.to - on_b.from).norm();
-  const double extent = on_a.from.cwiseAbs().maxCoeff() + on_b.from.cwiseAbs().maxCoeff();
-  const double slack = tol::kEdgesCross * reach + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
-  if (!((point_b - (point_a - sat.depth * sat.normal)).norm() <= slack)) return false;
-  // point_on_b = point_on_a + p n exactly; the edge's own closest point
-  // point_b agrees with it to rounding, because n is the edges' common normal.
+  if (!(best_miss <= best_slack)) return false;
+  // point_on_b = point_on_a + p n exactly; the edge's own closest point agrees
+  // with it to rounding, because n is the edges' common normal.
   const double p = -sat.depth;
   mfz_contact& c = out.contacts[out.contact_count++];
-  c.point_on_a = to_abi(point_a);
-  c.point_on_b = to_abi(Vec3(point_a + p * sat.normal));
+  c.point_on_a = to_abi(best_a);
+  c.point_on_b = to_abi(Vec3(best_a + p * sat.normal));
   c.penetration = p;
   return true;
 }

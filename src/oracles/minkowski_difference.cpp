@@ -43,10 +43,11 @@ ExactDepth MinkowskiDifference::at_origin() const {
     answer.signed_depth = nearest;
     return answer;
   }
-  // Outside: the gap is the distance to the nearest facet the origin sees.
+  // Outside: the gap is the distance to the nearest boundary triangle, over
+  // all of them: at a touching case rounding puts the origin a hair outside a
+  // facet whose triangle is far away, while the facet it touches says inside.
   double gap_sq = std::numeric_limits<double>::infinity();
   for (const MinkowskiFacet& f : facets_) {
-    if (f.offset >= 0) continue;
     const Vec3 c = closest_on_triangle(Vec3::Zero(), f.corner[0], f.corner[1], f.corner[2]);
     if (c.squaredNorm() < gap_sq) gap_sq = c.squaredNorm(), answer.normal = -c.normalized();
   }
