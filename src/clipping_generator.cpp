@@ -141,6 +141,35 @@ void add_contact(mfz_manifold& out, const Vec3& on_a, const Vec3& on_b, double p
   c.penetration = penetration;
 }
 
+// F17: the last resort when neither clipping nor the edges give a contact (the
+// reference face is one half of a fold, and the other hull's vertex pokes into
+// the other half): the incident hull's deepest vertex, paired with the point
+// where a ray from it along n leaves the reference hull. Both points are on
+// their surfaces by construction, and the ray's length is at most the depth,
+// since moving B by depth n separates the hulls.
+void deepest_vertex_contact(const PosedHull& reference, const PosedHull& incident, const Vec3& n, bool flipped,
+                            mfz_manifold& out) {
+  // Into the reference hull, and the way out of it along the normal.
+  const Vec3 into = flipped ? n : Vec3(-n);
+  const Vec3 out_of = -into;
+  const Vec3 vertex = incident.world_vertex(incident.support_vertex(into));
+  double exit = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < reference.face_count(); ++f) {
+    const Vec3 normal = reference.world_face_normal(f);
+    const double rate = normal.dot(out_of);
+    if (!(rate > 0)) continue;  // the ray does not leave through a face it runs along or away from
+    const double below = normal.dot(reference.world_face_point(f, 0) - vertex);
+    exit = std::min(exit, below / rate);
+  }
+  if (!(exit > 0) || !std::isfinite(exit)) return;
+  const double p = -exit;
+  if (flipped)
+    add_contact(out, vertex, vertex + p * n, p);
+  else
+    add_contact(out, vertex - p * n, vertex, p);
+}
+
+
 }  // namespace
 
 // The seed's last loop: each clipped point is on the incident face; its depth
@@ -277,6 +306,8 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   // beyond the reference face (a fold of 1e-9 rad in the other hull), and the
   // prism clips everything away. The supporting edges then give the contact.
   if (out.contact_count == 0 && steps.edge_contact(a, b, sat, out) && trace) trace->edge_contact = true;
+  if (out.contact_count == 0 && steps.significant_face_over_ties)
+    deepest_vertex_contact(*reference.hull, *incident.hull, n, flipped, out);
   return 0;
 }
 
