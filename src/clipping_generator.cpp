@@ -156,9 +156,10 @@ void deepest_vertex_contact(const PosedHull& reference, const PosedHull& inciden
   double exit = std::numeric_limits<double>::infinity();
   for (int f = 0; f < reference.face_count(); ++f) {
     const Vec3 normal = reference.world_face_normal(f);
+    const double below = normal.dot(reference.world_face_point(f, 0) - vertex);
+    if (below < 0) return;  // the vertex is not inside the reference hull: no contact here
     const double rate = normal.dot(out_of);
     if (!(rate > 0)) continue;  // the ray does not leave through a face it runs along or away from
-    const double below = normal.dot(reference.world_face_point(f, 0) - vertex);
     exit = std::min(exit, below / rate);
   }
   if (!(exit > 0) || !std::isfinite(exit)) return;
