@@ -71,8 +71,8 @@ int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* ou
 
 namespace {
 
+// Callers test `trace` first: building the message would allocate.
 void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
-  if (!trace) return;
   ClipTrace::Step step{std::move(what), {}};
   for (int k = 0; k < polygon.size(); ++k) step.polygon.push_back(polygon[k]);
   trace->steps.push_back(std::move(step));
@@ -294,10 +294,10 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
     steps.face_polygon(*incident.hull, incident_faces[i], polygon);
     // Each side plane can add one point: refuse rather than overflow.
     if (polygon.size() + reference_polygon.size() >= kMaxPolygonVertices) return 1;
-    record(trace, "incident face " + std::to_string(incident_faces[i]), polygon);
+    if (trace) record(trace, "incident face " + std::to_string(incident_faces[i]), polygon);
     if (!steps.clip_to_sides(reference, polygon, trace)) return 1;
     remove_points_outside(polygon, reference_plane);
-    record(trace, "points above the reference plane removed", polygon);
+    if (trace) record(trace, "points above the reference plane removed", polygon);
     for (int k = 0; k < polygon.size(); ++k)
       if (!holds_point(clipped, polygon[k]) && !clipped.push(polygon[k])) return 1;
   }
