@@ -124,48 +124,43 @@ InvariantCheck check_negative_penetration(const Context& c) {
   return check;
 }
 
-InvariantCheck check_pair_consistency(const Context& c) {
-  if (c.m.contact_count == 0) return skipped("pair-consistency", "no contacts");
+// The point checks: each contact's error (a length), the worst against
+// tol::kPoint, naming the contact that gave it.
+template <class ErrorOf>
+InvariantCheck worst_contact(const Context& c, const char* name, const char* what, ErrorOf&& error_of) {
+  if (c.m.contact_count == 0) return skipped(name, "no contacts");
   double worst = 0;
   int at = -1;
-  for (int i = 0; i < c.m.contact_count; ++i) {
-    const double err = (c.on_b(i) - (c.on_a(i) + c.m.contacts[i].penetration * c.n)).norm();
-    if (err > worst) worst = err, at = i;
-  }
+  for (int i = 0; i < c.m.contact_count; ++i)
+    if (const double err = error_of(i); err > worst || std::isnan(err)) worst = err, at = i;
   const double tol = c.scene.length_tolerance(tol::kPoint);
-  return measured("pair-consistency", c.relative(worst), c.relative(tol), describe("|b - (a + p_i n)|", at));
+  return measured(name, c.relative(worst), c.relative(tol), describe(what, at));
+}
+
+InvariantCheck check_pair_consistency(const Context& c) {
+  return worst_contact(c, "pair-consistency", "|b - (a + p_i n)|", [&](int i) {
+    return (c.on_b(i) - (c.on_a(i) + c.m.contacts[i].penetration * c.n)).norm();
+  });
 }
 
 InvariantCheck check_on_surface(const Context& c) {
-  if (c.m.contact_count == 0) return skipped("on-surface", "no contacts");
-  double worst = 0;
-  int at = -1;
-  for (int i = 0; i < c.m.contact_count; ++i) {
-    const double err = std::max(std::abs(signed_distance(c.scene.hull_a, c.scene.pose_a, c.on_a(i))),
-                                std::abs(signed_distance(c.scene.hull_b, c.scene.pose_b, c.on_b(i))));
-    if (err > worst) worst = err, at = i;
-  }
-  const double tol = c.scene.length_tolerance(tol::kPoint);
-  return measured("on-surface", c.relative(worst), c.relative(tol), describe("distance to own surface", at));
+  const Scene& s = c.scene;
+  return worst_contact(c, "on-surface", "distance to own surface", [&](int i) {
+    return std::max(std::abs(signed_distance(s.hull_a, s.pose_a, c.on_a(i))),
+                    std::abs(signed_distance(s.hull_b, s.pose_b, c.on_b(i))));
+  });
 }
 
 // The error is how far a point sticks out beyond what is allowed, so that one
 // tolerance serves both the own-hull and the other-hull bound.
 InvariantCheck check_within_both_hulls(const Context& c) {
-  if (c.m.contact_count == 0) return skipped("within-both-hulls", "no contacts");
-  double worst = 0;
-  int at = -1;
-  for (int i = 0; i < c.m.contact_count; ++i) {
+  const Scene& s = c.scene;
+  return worst_contact(c, "within-both-hulls", "outside allowed by", [&](int i) {
     const double slack = std::abs(c.m.contacts[i].penetration);
-    const Scene& s = c.scene;
-    const double err = std::max({signed_distance(s.hull_a, s.pose_a, c.on_a(i)),
-                                 signed_distance(s.hull_b, s.pose_b, c.on_b(i)),
-                                 signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
-                                 signed_distance(s.hull_a, s.pose_a, c.on_b(i)) - slack, 0.0});
-    if (err > worst) worst = err, at = i;
-  }
-  const double tol = c.scene.length_tolerance(tol::kPoint);
-  return measured("within-both-hulls", c.relative(worst), c.relative(tol), describe("outside allowed by", at));
+    return std::max({signed_distance(s.hull_a, s.pose_a, c.on_a(i)), signed_distance(s.hull_b, s.pose_b, c.on_b(i)),
+                     signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
+                     signed_distance(s.hull_a, s.pose_a, c.on_b(i)) - slack, 0.0});
+  });
 }
 
 InvariantCheck check_has_contacts(const Context& c) {

@@ -1,4 +1,5 @@
 // manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--out DIR]
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -47,7 +48,16 @@ int check_command(const std::vector<std::string>& words) {
     if (!t || *t <= 0) return usage("--call-timeout takes a number > 0");
     options.call_timeout = *t;
   }
-  if (args->options.count("--only")) options.selection.names.insert(args->get("--only", ""));
+  if (args->options.count("--only")) {
+    // A misspelt name would check nothing and pass: refuse it.
+    const std::string only = args->get("--only", "");
+    const auto& invariants = invariant_names();
+    const auto& relations = props::relation_names();
+    if (std::find(invariants.begin(), invariants.end(), only) == invariants.end() &&
+        std::find(relations.begin(), relations.end(), only) == relations.end())
+      return usage("--only takes an invariant or relation name, not '" + only + "'");
+    options.selection.names.insert(only);
+  }
   if (args->has("--quiet")) options.progress_every = 0;
   const auto result = props::run_check(options, std::cerr, error);
   if (!result) {

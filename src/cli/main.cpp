@@ -13,7 +13,9 @@ constexpr const char* kUsage =
     "  explain [--generator G] FILE               walk through one case step by step\n"
     "  check   [--generator G] [--cases N] [--seed S] [--seconds T] [--out DIR]\n"
     "                                             run the property suite on random cases; write a\n"
-    "                                             minimised case for the first violation\n"
+    "                                             minimised case for the first violation;\n"
+    "                                             --only NAME checks one invariant or relation,\n"
+    "                                             --call-timeout T limits each plugin call (s)\n"
     "G is 'builtin' (the default) or a path to a generator plugin .so.\n"
     "Exit status: 0 nothing found, 1 an invariant was violated, 2 usage, load or input error.\n";
 
