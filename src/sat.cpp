@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "coplanar_patch.h"
+#include "edge_arcs.h"
 #include "tolerances.h"
 
 namespace mfz {
@@ -107,37 +108,77 @@ bool is_flat_edge(const PosedHull& hull, int v0, int v1, int face) {
 
 namespace {
 
-// fixed: the harness's fixes F3 (face axes win near-ties) and F4 (flat edges
-// span no axis); without them, the seed's plain minimum.
-SatResult sat_with(const PosedHull& a, const PosedHull& b, bool fixed) {
+// One edge pair's axis. Returns false when it separates. `flat` says whether
+// either edge lies between coplanar faces; it is asked only of an axis about
+// to win.
+template <class FlatTest>
+bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, int a1, int eb, int b0, int b1,
+                        SatResult& best, bool fixed, FlatTest&& flat) {
+  const Vec3 edge_a = a.world_vertex(a1) - a.world_vertex(a0);
+  const Vec3 edge_b = b.world_vertex(b1) - b.world_vertex(b0);
+  const Vec3 axis = edge_a.cross(edge_b);
+  const double length = axis.norm();
+  // Parallel edges span no new axis (a face normal covers it); dividing by
+  // a vanishing length would only amplify rounding.
+  if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+  SatResult candidate = best;
+  const bool separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, candidate, fixed);
+  if (!separated && candidate.depth == best.depth) return true;
+  if (fixed && flat()) return true;
+  best = candidate;
+  return !separated;
+}
+
+// Every edge pair, as the seed tries them.
+void all_edge_pairs(const PosedHull& a, const PosedHull& b, SatResult& best, bool fixed) {
+  bool separated = false;
+  for_each_edge(a, [&](int ea, int a0, int a1, int face_a) {
+    for_each_edge(b, [&](int eb, int b0, int b1, int face_b) {
+      separated = !consider_edge_pair(a, b, ea, a0, a1, eb, b0, b1, best, fixed, [&] {
+        return is_flat_edge(a, a0, a1, face_a) || is_flat_edge(b, b0, b1, face_b);
+      });
+      return !separated;
+    });
+    return !separated;
+  });
+}
+
+// Only the pairs whose Gauss arcs may cross: the others span no face of the
+// Minkowski difference, so their overlap exceeds the depth (edge_arcs.h).
+void minkowski_edge_pairs(const PosedHull& a, const PosedHull& b, const EdgeArcs& arcs_a, const EdgeArcs& arcs_b,
+                          SatResult& best) {
+  for (int i = 0; i < arcs_a.size(); ++i) {
+    const EdgeArc& x = arcs_a[i];
+    for (int j = 0; j < arcs_b.size(); ++j) {
+      const EdgeArc& y = arcs_b[j];
+      if (!may_span_minkowski_face(x, y)) continue;
+      const bool apart = !consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, true, [&] {
+        return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(y.n_face, y.n_twin);
+      });
+      if (apart) return;
+    }
+  }
+}
+
+// fixed: the harness's fixes F3 (face axes win near-ties), F4 (flat edges
+// span no axis) and F7 (face normals count one way only), and edge pairs
+// pruned on the Gauss map; without them, the seed's plain minimum over
+// every pair.
+SatResult sat_with(const PosedHull& a, const PosedHull& b, bool fixed, bool prune = true) {
   SatResult best;
   best.depth = std::numeric_limits<double>::infinity();
   for (int f = 0; f < a.face_count(); ++f)
     if (!consider(a, b, a.world_face_normal(f), AxisKind::face_a, f, -1, best, fixed)) return best;
   for (int f = 0; f < b.face_count(); ++f)
     if (!consider(a, b, b.world_face_normal(f), AxisKind::face_b, -1, f, best, fixed)) return best;
-  bool separated = false;
-  for_each_edge(a, [&](int ea, int a0, int a1, int face_a) {
-    const Vec3 edge_a = a.world_vertex(a1) - a.world_vertex(a0);
-    for_each_edge(b, [&](int eb, int b0, int b1, int face_b) {
-      const Vec3 edge_b = b.world_vertex(b1) - b.world_vertex(b0);
-      const Vec3 axis = edge_a.cross(edge_b);
-      const double length = axis.norm();
-      // Parallel edges span no new axis (a face normal covers it); dividing by
-      // a vanishing length would only amplify rounding.
-      if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
-      SatResult candidate = best;
-      separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, candidate, fixed);
-      if (!separated && candidate.depth == best.depth) return true;
-      if (fixed && (is_flat_edge(a, a0, a1, face_a) || is_flat_edge(b, b0, b1, face_b))) {
-        separated = false;
-        return true;
-      }
-      best = candidate;
-      return !separated;
-    });
-    return !separated;
-  });
+  if (fixed && prune) {
+    const EdgeArcs arcs_a(a), arcs_b(b);
+    if (arcs_a.complete() && arcs_b.complete()) {
+      minkowski_edge_pairs(a, b, arcs_a, arcs_b, best);
+      return best;
+    }
+  }
+  all_edge_pairs(a, b, best, fixed);
   return best;
 }
 
@@ -145,5 +186,6 @@ SatResult sat_with(const PosedHull& a, const PosedHull& b, bool fixed) {
 
 SatResult run_sat(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, true); }
 SatResult run_seed_sat(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, false); }
+SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, true, false); }
 
 }  // namespace mfz

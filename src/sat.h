@@ -35,8 +35,11 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// separating axis. Allocates nothing.
 SatResult run_seed_sat(const PosedHull& a, const PosedHull& b);
 /// The built-in generator's SAT: the seed's, except that an edge axis must
-/// beat the face axes by tol::kEdgeAxisBias (F3) and edges between coplanar
-/// faces give no axis (F4).
+/// beat the face axes by tol::kEdgeAxisBias (F3), edges between coplanar
+/// faces give no axis (F4), a face normal counts one way only (F7), and only
+/// edge pairs whose Gauss arcs may cross are tried (edge_arcs.h).
 SatResult run_sat(const PosedHull& a, const PosedHull& b);
+/// run_sat trying every edge pair: what the pruning must agree with.
+SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b);
 
 }  // namespace mfz

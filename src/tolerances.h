@@ -67,6 +67,13 @@ inline constexpr double kCoplanarSine = 1e-11;
 /// overlap is smaller by more than this fraction of the hulls' extent along
 /// it, so that a tie (to rounding) keeps the face contact and its polygon.
 inline constexpr double kEdgeAxisBias = 1e-9;
+/// Generator: the Gauss-map test that prunes edge pairs (edge_arcs.h) drops
+/// a pair only when its sign products miss by more than this. They are
+/// products of dot products of unit normals, exact to about 1e-15, but a
+/// hull's stored normals may sit 1e-12 off its vertices' planes; near such a
+/// crossing the edge axis is within that angle of a face axis, which F3
+/// prefers anyway.
+inline constexpr double kGaussArcSlack = 1e-9;
 /// Generator: the supporting edges of an edge-edge axis make a contact only if
 /// their closest points lie along n to within this fraction of their lengths.
 inline constexpr double kEdgesCross = 1e-9;

@@ -1,0 +1,142 @@
+// The Gauss-map pruning of SAT's edge pairs: it finds each edge's two faces,
+// drops the pairs that span no face of the Minkowski difference, and keeps
+// the built-in SAT's answer what it was with every pair tried.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "edge_arcs.h"
+#include "families.h"
+#include "hull.h"
+#include "sat.h"
+#include "test_support.h"
+#include "tolerances.h"
+
+#include <limits>
+
+namespace mfz {
+namespace {
+
+struct PosedBox {
+  Hull hull;
+  Pose pose;
+  mfz_hull view;
+  PosedBox(const Pose& p) : hull(*build_hull(test::box_points(1, 1, 1)).hull), pose(p), view(hull.view()) {}
+};
+
+TEST(EdgeArcs, EveryEdgeOfABoxMeetsItsTwoFaces) {
+  const PosedBox box({Vec3::Zero(), Quat::Identity()});
+  const PosedHull posed(box.view, box.pose);
+  const EdgeArcs arcs(posed);
+  ASSERT_TRUE(arcs.complete());
+  ASSERT_EQ(arcs.size(), 12);
+  for (int i = 0; i < arcs.size(); ++i) {
+    EXPECT_NE(arcs[i].face, arcs[i].twin);
+    // A box's faces meet at right angles: the arc is a quarter circle.
+    EXPECT_NEAR(arcs[i].n_face.dot(arcs[i].n_twin), 0.0, 1e-15);
+    EXPECT_NEAR(arcs[i].across.norm(), 1.0, 1e-15);
+  }
+}
+
+// Checked against the definition: a pair spans a face of A - B when along
+// its axis A's support and B's opposite support contain those edges. A box
+// turned about a skew axis has no degenerate pairs, so the test keeps
+// exactly the spanning ones.
+TEST(EdgeArcs, KeepsCrossingArcsAndDropsDisjointOnes) {
+  const PosedBox a({Vec3::Zero(), Quat::Identity()});
+  const PosedBox b({Vec3(0, 0, 2), test::about(Vec3(1, 2, 3).normalized(), 0.7)});
+  const PosedHull pa(a.view, a.pose), pb(b.view, b.pose);
+  const EdgeArcs arcs_a(pa), arcs_b(pb);
+  int kept = 0, spanning = 0;
+  for (int i = 0; i < arcs_a.size(); ++i)
+    for (int j = 0; j < arcs_b.size(); ++j) {
+      const Vec3 ea = pa.world_vertex(arcs_a[i].v1) - pa.world_vertex(arcs_a[i].v0);
+      const Vec3 eb = pb.world_vertex(arcs_b[j].v1) - pb.world_vertex(arcs_b[j].v0);
+      Vec3 n = ea.cross(eb);
+      if (n.norm() < 1e-9) continue;
+      n.normalize();
+      // The pair spans a face of A - B iff, along n or -n, A's support
+      // contains edge i and B's opposite support contains edge j.
+      bool spans = false;
+      for (const Vec3& d : {n, Vec3(-n)}) {
+        const double top_a = pa.project(d).max, bottom_b = pb.project(d).min;
+        const bool a_supports = std::abs(d.dot(pa.world_vertex(arcs_a[i].v0)) - top_a) < 1e-12 &&
+                                std::abs(d.dot(pa.world_vertex(arcs_a[i].v1)) - top_a) < 1e-12;
+        const bool b_supports = std::abs(d.dot(pb.world_vertex(arcs_b[j].v0)) - bottom_b) < 1e-12 &&
+                                std::abs(d.dot(pb.world_vertex(arcs_b[j].v1)) - bottom_b) < 1e-12;
+        spans = spans || (a_supports && b_supports);
+      }
+      const bool may = may_span_minkowski_face(arcs_a[i], arcs_b[j]);
+      EXPECT_TRUE(!spans || may) << "edge " << i << " of A and " << j << " of B span a face but were dropped";
+      kept += may;
+      spanning += spans;
+    }
+  EXPECT_GT(spanning, 0);
+  EXPECT_EQ(kept, spanning) << "a pair that spans no face was kept";
+}
+
+TEST(EdgeArcs, AHullWithAnOpenEdgeIsNotComplete) {
+  // A tetrahedron missing one face: three edges have no twin.
+  const std::vector<Vec3> v = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};
+  const std::vector<std::vector<int>> loops = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}};
+  const std::vector<Vec3> normals = {Vec3(0, 0, -1), Vec3(0, -1, 0), Vec3(-1, 0, 0)};
+  const Hull open = Hull::from_faces(v, loops, normals);
+  const mfz_hull view = open.view();
+  const Pose pose{Vec3::Zero(), Quat::Identity()};
+  EXPECT_FALSE(EdgeArcs(PosedHull(view, pose)).complete());
+}
+
+// world_extent: the largest world coordinate, whose ulps bound the rounding;
+// an edge axis turns by those ulps over the shortest edge.
+void expect_same_axis(const SatResult& pruned, const SatResult& every, double world_extent, double shortest_edge) {
+  RC_LOG() << "pruned: " << axis_kind_name(pruned.kind) << " " << pruned.feature_a << "/" << pruned.feature_b << " depth "
+           << pruned.depth << " n " << pruned.normal.transpose() << "\nevery pair: " << axis_kind_name(every.kind) << " "
+           << every.feature_a << "/" << every.feature_b << " depth " << every.depth << " n " << every.normal.transpose()
+           << "\n";
+  const double ulps = tol::kWorldUlps * std::numeric_limits<double>::epsilon();
+  if (pruned.separated != every.separated) {
+    // Touching: a parallel edge's axis rounds to a gap of a few ulps.
+    RC_ASSERT(std::abs(pruned.depth) <= ulps * world_extent);
+    RC_ASSERT(std::abs(every.depth) <= ulps * world_extent);
+    return;
+  }
+  if (pruned.separated) return;  // any separating axis will do
+  RC_ASSERT(pruned.kind == every.kind);
+  if (pruned.kind != AxisKind::edge_edge) {
+    RC_ASSERT(pruned.depth == every.depth);
+    RC_ASSERT(pruned.normal == every.normal);
+    RC_ASSERT(pruned.feature_a == every.feature_a);
+    RC_ASSERT(pruned.feature_b == every.feature_b);
+    return;
+  }
+  // Parallel edges of one hull give one axis; trying every pair meets a
+  // non-supporting one of them first, and its cross product rounds apart.
+  RC_ASSERT(std::abs(pruned.depth - every.depth) <= ulps * (world_extent + std::abs(every.depth)));
+  RC_ASSERT((pruned.normal - every.normal).norm() <= 1e-12 + ulps * world_extent / shortest_edge);
+}
+
+// Over every family of the property suite (folds, slabs, 64-gons, far
+// frames): the pruned pairs never change the axis, bit for bit.
+RC_GTEST_PROP(SatPruning, GivesTheAxisThatTryingEveryEdgePairGives, ()) {
+  const props::GeneratedCase c = *props::any_case();
+  HullBuild a = build_hull(c.file.points_a), b = build_hull(c.file.points_b);
+  RC_PRE(a.hull.has_value() && b.hull.has_value());
+  const mfz_hull va = a.hull->view(), vb = b.hull->view();
+  Pose pa = c.file.pose_a, pb = c.file.pose_b;
+  pa.orientation.normalize();
+  pb.orientation.normalize();
+  const PosedHull posed_a(va, pa), posed_b(vb, pb);
+  RC_TAG(c.placement);
+  double extent = 0;
+  for (int i = 0; i < va.vertex_count; ++i) extent = std::max(extent, posed_a.world_vertex(i).cwiseAbs().maxCoeff());
+  for (int i = 0; i < vb.vertex_count; ++i) extent = std::max(extent, posed_b.world_vertex(i).cwiseAbs().maxCoeff());
+  double shortest = INFINITY;
+  for (const PosedHull* h : {&posed_a, &posed_b}) {
+    const EdgeArcs arcs(*h);
+    for (int i = 0; i < arcs.size(); ++i)
+      shortest = std::min(shortest, (h->world_vertex(arcs[i].v1) - h->world_vertex(arcs[i].v0)).norm());
+  }
+  expect_same_axis(run_sat(posed_a, posed_b), run_sat_every_pair(posed_a, posed_b), extent, shortest);
+}
+
+}  // namespace
+}  // namespace mfz
