@@ -10,7 +10,8 @@
 namespace mfz::props {
 namespace {
 
-/// Normals of two runs of a relation agree within this (dimensionless).
+/// Normals of two runs of a relation agree within this (dimensionless), plus
+/// the world frame's resolution over the shortest edge (tolerances_for).
 constexpr double kRelationNormal = 1e-6;
 /// Contact points of two runs agree within this (x L). Looser than the
 /// invariants' 1e-9: where an incident edge grazes a clipping plane at an
@@ -99,7 +100,7 @@ bool within_region(const std::vector<Contact>& x, const std::vector<Contact>& y,
 }
 
 struct Tolerances {
-  double depth, point;
+  double depth, point, normal;
 };
 
 std::optional<std::string> compare(const Answer& original, const Answer& other, const RelationInput& in,
@@ -111,7 +112,7 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
   if (!(std::abs(original.depth - other.depth) <= tol.depth))
     return "depth " + std::to_string(original.depth) + " vs " + std::to_string(other.depth);
   if (in.tie) return std::nullopt;
-  if (!((original.normal - other.normal).norm() <= kRelationNormal)) return std::string("the normals differ");
+  if (!((original.normal - other.normal).norm() <= tol.normal)) return std::string("the normals differ");
   const int n1 = static_cast<int>(original.contacts.size()), n2 = static_cast<int>(other.contacts.size());
   if (n1 > kComparedContacts && n2 > kComparedContacts) return std::nullopt;
   if (n1 > 8 || n2 > 8) return std::nullopt;  // a region of many points is not compared
@@ -137,6 +138,25 @@ Hull scaled(const Hull& h, double s) {
   return Hull::from_faces(vertices, loops, normals);
 }
 
+// The same hull as permuted input points give it: vertices in reverse order,
+// faces in reverse order, each loop starting one vertex later. Qhull would
+// number a permuted cloud its own way, or often the same way; this
+// permutation moves every index, and costs no hull build.
+Hull reordered(const Hull& h) {
+  const int last = h.vertex_count() - 1;
+  std::vector<Vec3> vertices;
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (int i = last; i >= 0; --i) vertices.push_back(h.vertex(i));
+  for (int f = h.face_count() - 1; f >= 0; --f) {
+    const int n = h.face_size(f);
+    loops.emplace_back();
+    for (int k = 1; k <= n; ++k) loops.back().push_back(last - h.face_vertex(f, k % n));
+    normals.push_back(h.face_normal(f));
+  }
+  return Hull::from_faces(vertices, loops, normals);
+}
+
 // Every face split into a fan of triangles with the face's normal, as a mesh
 // exported from a modelling tool arrives.
 Hull triangulated(const Hull& h) {
@@ -152,9 +172,12 @@ Hull triangulated(const Hull& h) {
   return Hull::from_faces(vertices, loops, normals);
 }
 
+// An edge-edge normal is the cross product of two edges taken from world
+// coordinates, so it turns by the world frame's resolution over the shorter
+// edge: a 1e-4 edge 1e6 from the origin points only to within 1e-4 rad.
 Tolerances tolerances_for(const Scene& s, double extra_extent = 0) {
   const double ulps = tol::kWorldUlps * std::numeric_limits<double>::epsilon() * (s.world_extent + extra_extent);
-  return {tol::kDepth * s.scale + ulps, kRelationPoint * s.scale + ulps};
+  return {tol::kDepth * s.scale + ulps, kRelationPoint * s.scale + ulps, kRelationNormal + ulps / s.shortest_edge};
 }
 
 std::optional<Finding> finding_if(const std::string& relation, const std::optional<std::string>& difference) {
@@ -242,12 +265,9 @@ std::optional<Finding> scale(const RelationInput& in, GeneratorSession& g) {
 }
 
 std::optional<Finding> vertex_order(const RelationInput& in, GeneratorSession& g) {
-  std::vector<Vec3> pa(in.file.points_a.rbegin(), in.file.points_a.rend());
-  std::vector<Vec3> pb(in.file.points_b.rbegin(), in.file.points_b.rend());
-  HullBuild a = build_hull(pa), b = build_hull(pb);
-  if (!a.hull || !b.hull) return Finding{"vertex-order", "the reversed points build no hull: " + a.error + b.error};
+  const Hull a = reordered(in.scene.hull_a), b = reordered(in.scene.hull_b);
   mfz_manifold out;
-  if (auto f = run(g, {&*a.hull, in.scene.pose_a, &*b.hull, in.scene.pose_b}, out, "vertex-order")) return f;
+  if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, "vertex-order")) return f;
   return finding_if("vertex-order", compare(answer_of(in.manifold), answer_of(out), in, tolerances_for(in.scene)));
 }
 

@@ -2,6 +2,7 @@
 /// \file
 /// Sutherland-Hodgman clipping of a convex polygon in 3-d against planes, on
 /// fixed-capacity storage (no heap in the generator's hot path).
+#include <algorithm>
 #include <array>
 
 #include "vec.h"
@@ -30,6 +31,12 @@ class ClipPolygon {
     if (size_ == kMaxPolygonVertices) return false;
     points_[size_++] = p;
     return true;
+  }
+  /// Takes `other`'s points: only the ones in use, not the whole capacity
+  /// (12 KiB), which a clip pass per side plane would otherwise copy.
+  void take(const ClipPolygon& other) {
+    std::copy(other.points_.begin(), other.points_.begin() + other.size_, points_.begin());
+    size_ = other.size_;
   }
   void erase(int i) {
     for (int k = i + 1; k < size_; ++k) points_[k - 1] = points_[k];

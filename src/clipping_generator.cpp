@@ -39,10 +39,22 @@ void faces_at_support(const PosedHull& hull, const Vec3& direction, int support,
 }
 
 // Equal to rounding: two tied faces clip their shared edge from both ends.
-bool holds_point(const ClipPolygon& points, const Vec3& p) {
+// Rounding is a few ulps of the coordinates the clip worked with (the
+// reference face's, `resolution`) whatever the hull's size: a relative
+// 1e-12 was 4500 ulps, and 1e6 L from the origin it merged the corners of a
+// slab 1e-6 thick (FINDINGS F19).
+bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution) {
+  const double same = tol::kWorldUlps * std::numeric_limits<double>::epsilon() *
+                      std::max(resolution, p.cwiseAbs().maxCoeff());
   for (int k = 0; k < points.size(); ++k)
-    if ((points[k] - p).norm() <= 1e-12 * (1 + p.cwiseAbs().maxCoeff())) return true;
+    if ((points[k] - p).norm() <= same) return true;
   return false;
+}
+
+double largest_coordinate(const ClipPolygon& polygon) {
+  double largest = 0;
+  for (int k = 0; k < polygon.size(); ++k) largest = std::max(largest, polygon[k].cwiseAbs().maxCoeff());
+  return largest;
 }
 
 }  // namespace
@@ -98,7 +110,7 @@ bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incide
     const Vec3 normal = hull.world_face_normal(adjacent);
     const Plane side{normal, normal.dot(hull.world_vertex(v0))};
     if (!clip_to_plane(incident, side, scratch)) return false;
-    std::swap(incident, scratch);
+    incident.take(scratch);
     if (trace)
       record(trace, "clipped against the plane of face " + std::to_string(adjacent) + " (across edge " +
                         std::to_string(v0) + "-" + std::to_string(v1) + ")", incident);
@@ -125,7 +137,7 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
     if (!(length > 0)) continue;
     const Plane side{outward / length, outward.dot(from) / length};
     if (!clip_to_plane(incident, side, scratch)) return false;
-    std::swap(incident, scratch);
+    incident.take(scratch);
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
   }
@@ -288,6 +300,7 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   int tied = 1;
   if (steps.significant_face_over_ties)
     tied = tied_significant_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
+  const double resolution = largest_coordinate(reference_polygon);
   const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
   const Plane reference_plane{reference.normal, reference.normal.dot(on_reference)};
   for (int i = 0; i < tied; ++i) {
@@ -298,8 +311,11 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
     if (!steps.clip_to_sides(reference, polygon, trace)) return 1;
     remove_points_outside(polygon, reference_plane);
     if (trace) record(trace, "points above the reference plane removed", polygon);
-    for (int k = 0; k < polygon.size(); ++k)
-      if (!holds_point(clipped, polygon[k]) && !clipped.push(polygon[k])) return 1;
+    for (int k = 0; k < polygon.size(); ++k) {
+      // Only F11's joined faces share points; the seed keeps every point.
+      if (steps.significant_face_over_ties && holds_point(clipped, polygon[k], resolution)) continue;
+      if (!clipped.push(polygon[k])) return 1;
+    }
   }
   reduce_polygon(clipped, MFZ_MAX_CONTACTS);
   steps.emit_contacts(reference, clipped, n, flipped, out);

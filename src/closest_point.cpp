@@ -44,4 +44,32 @@ Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3
   return a + ab * (vb / denom) + ac * (vc / denom);
 }
 
+void closest_between_segments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, Vec3& on_1, Vec3& on_2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const auto clamp01 = [](double t) { return t < 0 ? 0.0 : (t > 1 ? 1.0 : t); };
+  double s = 0, t = 0;
+  if (a == 0 && e == 0) {
+    on_1 = p1, on_2 = p2;
+    return;
+  }
+  if (a == 0) {
+    t = clamp01(f / e);
+  } else {
+    const double c = d1.dot(r);
+    if (e == 0) {
+      s = clamp01(-c / a);
+    } else {
+      const double b = d1.dot(d2), denominator = a * e - b * b;
+      // Parallel segments (denominator 0): any s will do; start from p1.
+      s = denominator > 0 ? clamp01((b * f - c * e) / denominator) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) t = 0, s = clamp01(-c / a);
+      else if (t > 1) t = 1, s = clamp01((b - c) / a);
+    }
+  }
+  on_1 = p1 + s * d1;
+  on_2 = p2 + t * d2;
+}
+
 }  // namespace mfz

@@ -13,4 +13,8 @@ Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
 /// its closest edge.
 Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
+/// The closest points `on_1` of segment [p1, q1] and `on_2` of [p2, q2]
+/// (Ericson, 5.1.9); parallel segments give one of the nearest pairs.
+void closest_between_segments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, Vec3& on_1, Vec3& on_2);
+
 }  // namespace mfz

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "hull_distance.h"
+#include "oracles/hull_gap.h"
 #include "tolerances.h"
 
 namespace mfz {
@@ -22,7 +23,7 @@ const char* status_name(CheckStatus status) {
 OracleAnswers consult_oracles(const Scene& s) {
   OracleAnswers o;
   o.minkowski = MinkowskiDifference::build(s.world_a, s.world_b, o.error);
-  if (o.minkowski) o.exact = o.minkowski->at_origin();
+  if (o.minkowski) o.exact = exact_depth(*o.minkowski, s);
   o.sat_axes = rank_sat_axes(s);
   o.ccd = ask_libccd(s);
   o.touching = std::abs(o.exact.signed_depth) <= s.length_tolerance(tol::kTouching);

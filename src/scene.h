@@ -16,6 +16,7 @@ struct Scene {
   Pose pose_a, pose_b;  ///< orientations unit length
   double scale = 1;     ///< L: the larger hull diameter
   double world_extent = 0;  ///< M: the largest absolute world coordinate of a vertex
+  double shortest_edge = 0;  ///< of either hull: directions taken from edges resolve to eps M / this
   std::vector<Vec3> world_a, world_b;  ///< posed vertices
 
   /// A length tolerance: k * L plus the world frame's resolution (tolerances.h).

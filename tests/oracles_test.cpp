@@ -4,6 +4,8 @@
 
 #include "oracles/brute_force_sat.h"
 #include "oracles/libccd_oracle.h"
+#include "closest_point.h"
+#include "oracles/hull_gap.h"
 #include "oracles/minkowski_difference.h"
 #include "test_support.h"
 
@@ -41,10 +43,47 @@ TEST(MinkowskiOracle, GapIsTheDistanceBetweenTheHullsCornerToCorner) {
   const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {}, box_points(0.5, 0.5, 0.5),
                                            {Vec3(1.3, 1.4, 0), Quat::Identity()}));
   std::string error;
-  const ExactDepth exact = MinkowskiDifference::build(s.world_a, s.world_b, error)->at_origin();
+  const auto md = MinkowskiDifference::build(s.world_a, s.world_b, error);
+  // The planes alone give only a lower bound: the nearest plane is 0.4 away.
+  EXPECT_NEAR(md->at_origin().signed_depth, -0.4, 1e-14);
+  const ExactDepth exact = exact_depth(*md, s);
   EXPECT_FALSE(exact.colliding);
   EXPECT_NEAR(exact.signed_depth, -std::hypot(0.3, 0.4), 1e-14);
   EXPECT_VEC_NEAR(exact.normal, Vec3(0.6, 0.8, 0), 1e-14);
+}
+
+TEST(HullGap, EdgeAcrossEdgeIsTheDistanceBetweenTheEdges) {
+  // B's lowest edge runs along y, 0.25 above A's top edge along x.
+  const Quat edge_down = test::about(Vec3(0, 1, 0), M_PI / 4) * Quat::Identity();
+  const Quat ridge = test::about(Vec3(1, 0, 0), M_PI / 4);
+  const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {Vec3::Zero(), ridge}, box_points(0.5, 0.5, 0.5),
+                                           {Vec3(0, 0, std::sqrt(2.0) + 0.25), edge_down}));
+  const HullGap gap = hull_gap(s);
+  EXPECT_NEAR(gap.distance, 0.25, 1e-14);
+  EXPECT_VEC_NEAR(gap.on_a, Vec3(0, 0, std::sqrt(0.5)), 1e-14);
+  EXPECT_VEC_NEAR(gap.on_b, Vec3(0, 0, std::sqrt(0.5) + 0.25), 1e-14);
+}
+
+TEST(HullGap, AVertexAboveAFaceIsItsHeight) {
+  const Scene s = scene_of(test::make_case(box_points(2, 2, 0.5), {}, test::tetrahedron_points(),
+                                           {Vec3(0.3, -0.2, 3), Quat::Identity()}));
+  const HullGap gap = hull_gap(s);
+  double lowest = INFINITY;
+  for (const Vec3& p : s.world_b) lowest = std::min(lowest, p.z());
+  EXPECT_NEAR(gap.distance, lowest - 0.5, 1e-14);
+  EXPECT_NEAR(gap.on_a.z(), 0.5, 1e-14);
+}
+
+TEST(ClosestBetweenSegments, ParallelAndSkewAndDegenerate) {
+  Vec3 p, q;
+  closest_between_segments(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, -1, 1), Vec3(0.5, 1, 1), p, q);
+  EXPECT_VEC_NEAR(p, Vec3(0.5, 0, 0), 1e-15);
+  EXPECT_VEC_NEAR(q, Vec3(0.5, 0, 1), 1e-15);
+  closest_between_segments(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(2, 0, 1), Vec3(3, 0, 1), p, q);
+  EXPECT_VEC_NEAR(p, Vec3(1, 0, 0), 1e-15);
+  EXPECT_VEC_NEAR(q, Vec3(2, 0, 1), 1e-15);
+  closest_between_segments(Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(-1, 2, 0), Vec3(1, 2, 0), p, q);
+  EXPECT_VEC_NEAR(q, Vec3(0, 2, 0), 1e-15);
 }
 
 TEST(MinkowskiOracle, MovingBByTheDepthAlongTheNormalLeavesThemTouching) {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include "closest_point.h"
+#include <algorithm>
 #include "qhull_facets.h"
 
 namespace mfz {
@@ -14,14 +14,14 @@ std::optional<MinkowskiDifference> MinkowskiDifference::build(const std::vector<
   differences.reserve(world_a.size() * world_b.size());
   for (const Vec3& a : world_a)
     for (const Vec3& b : world_b) differences.push_back(a - b);
-  const std::vector<QhullFacet> facets = qhull_facets(differences, /*triangulate=*/true, error);
+  const std::vector<QhullFacet> facets = qhull_facets(differences, /*triangulate=*/false, error);
   if (facets.empty()) return std::nullopt;
   MinkowskiDifference md;
   for (const QhullFacet& f : facets) {
-    if (f.point_ids.size() != 3) continue;  // "Qt" gives triangles only
-    MinkowskiFacet out{f.normal.normalized(), 0, {}};
-    for (int k = 0; k < 3; ++k) out.corner[k] = differences[f.point_ids[k]];
-    out.offset = out.normal.dot(out.corner[0]);
+    // The offset through a vertex of the facet, not Qhull's own: a merged
+    // facet's plane is an average, and a vertex is a true point of A - B.
+    MinkowskiFacet out{f.normal.normalized(), -std::numeric_limits<double>::infinity()};
+    for (const int id : f.point_ids) out.offset = std::max(out.offset, out.normal.dot(differences[id]));
     md.facets_.push_back(out);
   }
   return md;
@@ -38,20 +38,17 @@ ExactDepth MinkowskiDifference::at_origin() const {
   double nearest = std::numeric_limits<double>::infinity();
   for (const MinkowskiFacet& f : facets_)
     if (f.offset < nearest) nearest = f.offset, answer.normal = f.normal;
-  if (nearest >= 0) {
-    answer.colliding = true;
+  answer.colliding = nearest >= 0;
+  if (answer.colliding) {
     answer.signed_depth = nearest;
     return answer;
   }
-  // Outside: the gap is the distance to the nearest boundary triangle, over
-  // all of them: at a touching case rounding puts the origin a hair outside a
-  // facet whose triangle is far away, while the facet it touches says inside.
-  double gap_sq = std::numeric_limits<double>::infinity();
-  for (const MinkowskiFacet& f : facets_) {
-    const Vec3 c = closest_on_triangle(Vec3::Zero(), f.corner[0], f.corner[1], f.corner[2]);
-    if (c.squaredNorm() < gap_sq) gap_sq = c.squaredNorm(), answer.normal = -c.normalized();
-  }
-  answer.signed_depth = -std::sqrt(gap_sq);
+  // Outside: the plane the origin lies furthest outside of, a lower bound on
+  // the gap; hull_gap measures the gap itself.
+  double furthest = -std::numeric_limits<double>::infinity();
+  for (const MinkowskiFacet& f : facets_)
+    if (-f.offset > furthest) furthest = -f.offset, answer.normal = -f.normal;
+  answer.signed_depth = -furthest;
   return answer;
 }
 
