@@ -43,7 +43,7 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     return outcome;
   }
   const OracleAnswers oracles = consult_oracles(scene);
-  if (!oracles.minkowski) {
+  if (oracles.exact_failed()) {
     outcome.invalid = true;
     outcome.invalid_reason = "the exact oracle failed: " + oracles.error;
     return outcome;

@@ -61,6 +61,12 @@ void closest_points(const Segment& s1, const Segment& s2, Vec3& c1, Vec3& c2) {
   c2 = s2.from + t * d2;
 }
 
+bool holds_contact(const mfz_manifold& out, int first, const Vec3& point_a) {
+  for (int k = first; k < out.contact_count; ++k)
+    if (to_vec(out.contacts[k].point_on_a) == point_a) return true;
+  return false;
+}
+
 }  // namespace
 
 bool no_edge_contact(const PosedHull&, const PosedHull&, const SatResult&, mfz_manifold&) { return false; }
@@ -69,34 +75,34 @@ bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatRe
   Segment edges_a[kMaxSupportingEdges], edges_b[kMaxSupportingEdges];
   const int count_a = supporting_edges(a, sat.normal, edges_a);
   const int count_b = supporting_edges(b, -sat.normal, edges_b);
-  // Of the candidate pairs, the one whose closest points lie most nearly
-  // along n at the depth: the pair that crosses (F16).
-  double best_miss = std::numeric_limits<double>::infinity(), best_slack = 0;
-  Vec3 best_a = Vec3::Zero();
+  // Every candidate pair whose closest points lie along n at the depth, to
+  // rounding: the pairs that cross (F16). Where two parallel edges of one
+  // hull are equally deep to rounding (an edge across a thin face turned
+  // 1e-6 rad from n, 1e6 L out), each crossing is a contact: picking one
+  // would leave a contact a face's width away to rounding (F20).
+  const int first = out.contact_count;
   for (int i = 0; i < count_a; ++i)
     for (int j = 0; j < count_b; ++j) {
       Vec3 point_a, point_b;
       closest_points(edges_a[i], edges_b[j], point_a, point_b);
       const double miss = (point_b - (point_a - sat.depth * sat.normal)).norm();
-      if (miss < best_miss) {
-        // The tolerance adds the rounding of world coordinates far from the origin.
-        const double reach = (edges_a[i].to - edges_a[i].from).norm() + (edges_b[j].to - edges_b[j].from).norm();
-        const double extent = edges_a[i].from.cwiseAbs().maxCoeff() + edges_b[j].from.cwiseAbs().maxCoeff();
-        best_miss = miss, best_a = point_a;
-        best_slack = tol::kEdgesCross * reach + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
-      }
+      // The tolerance adds the rounding of world coordinates far from the origin.
+      const double reach = (edges_a[i].to - edges_a[i].from).norm() + (edges_b[j].to - edges_b[j].from).norm();
+      const double extent = edges_a[i].from.cwiseAbs().maxCoeff() + edges_b[j].from.cwiseAbs().maxCoeff();
+      const double slack = tol::kEdgesCross * reach + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
+      // Only edges whose shadows along n cross make an edge contact; otherwise
+      // the axis came from a near-tie with a face axis: clip faces instead.
+      if (!(miss <= slack)) continue;
+      // point_on_b = point_on_a + p n exactly; the edge's own closest point
+      // agrees with it to rounding, because n is the edges' common normal.
+      const double p = -(point_a - point_b).dot(sat.normal);
+      if (!(p < 0) || out.contact_count == MFZ_MAX_CONTACTS || holds_contact(out, first, point_a)) continue;
+      mfz_contact& c = out.contacts[out.contact_count++];
+      c.point_on_a = to_abi(point_a);
+      c.point_on_b = to_abi(Vec3(point_a + p * sat.normal));
+      c.penetration = p;
     }
-  // Only edges whose shadows along n cross make an edge contact; otherwise
-  // the axis came from a near-tie with a face axis: clip faces instead.
-  if (!(best_miss <= best_slack)) return false;
-  // point_on_b = point_on_a + p n exactly; the edge's own closest point agrees
-  // with it to rounding, because n is the edges' common normal.
-  const double p = -sat.depth;
-  mfz_contact& c = out.contacts[out.contact_count++];
-  c.point_on_a = to_abi(best_a);
-  c.point_on_b = to_abi(Vec3(best_a + p * sat.normal));
-  c.penetration = p;
-  return true;
+  return out.contact_count > first;
 }
 
 }  // namespace mfz

@@ -1,6 +1,7 @@
 #include "oracles/brute_force_sat.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "posed_hull.h"
@@ -21,8 +22,17 @@ namespace {
 // of the Minkowski difference (reversed, a face normal meets an edge or a
 // vertex of its hull). Edge pairs count either way.
 void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, std::vector<RankedAxis>& out) {
-  const double along = directed_overlap(s.world_a, s.world_b, axis);
-  const double against = directed_overlap(s.world_a, s.world_b, -axis);
+  // One pass gives both directions: along = max_a - min_b, against = max_b - min_a.
+  double min_a = INFINITY, max_a = -INFINITY, min_b = INFINITY, max_b = -INFINITY;
+  for (const Vec3& p : s.world_a) {
+    const double d = axis.dot(p);
+    min_a = std::min(min_a, d), max_a = std::max(max_a, d);
+  }
+  for (const Vec3& p : s.world_b) {
+    const double d = axis.dot(p);
+    min_b = std::min(min_b, d), max_b = std::max(max_b, d);
+  }
+  const double along = max_a - min_b, against = max_b - min_a;
   if (kind == AxisKind::face_a) return out.push_back({axis, along, kind, fa, fb});
   if (kind == AxisKind::face_b) return out.push_back({-axis, against, kind, fa, fb});
   if (along <= against)
@@ -35,6 +45,7 @@ void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, s
 
 std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
   std::vector<RankedAxis> axes;
+  axes.reserve(s.hull_a.face_count() + s.hull_b.face_count() + s.hull_a.edges().size() * s.hull_b.edges().size());
   for (int f = 0; f < s.hull_a.face_count(); ++f)
     add_axis(s, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1, axes);
   for (int f = 0; f < s.hull_b.face_count(); ++f)
