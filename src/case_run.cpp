@@ -13,10 +13,6 @@ std::optional<CaseRun> run_case(const CaseFile& c, const Generator& generator, s
   const mfz_pose pa = run.scene.abi_pose_a(), pb = run.scene.abi_pose_b();
   const int32_t status = generator.generate(a, pa, b, pb, run.manifold);
   run.oracles = consult_oracles(run.scene);
-  if (run.oracles.exact_failed()) {
-    error = "the exact oracle failed: " + run.oracles.error;
-    return std::nullopt;
-  }
   run.verdict = check_manifold(run.scene, run.oracles, status, run.manifold);
   return run;
 }

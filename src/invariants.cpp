@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "hull_distance.h"
-#include "oracles/hull_gap.h"
+#include "oracles/exact_depth.h"
 #include "tolerances.h"
 
 namespace mfz {
@@ -23,19 +23,8 @@ const char* status_name(CheckStatus status) {
 OracleAnswers consult_oracles(const Scene& s) {
   OracleAnswers o;
   o.sat_axes = rank_sat_axes(s);
-  // A separating axis proves the hulls apart, and the gap is hull_gap's
-  // either way: Qhull's A - B would only confirm the side. It is built where
-  // the hulls overlap or nearly touch, for the depth.
+  o.exact = exact_depth(s, o.sat_axes);
   const double touching = s.length_tolerance(tol::kTouching);
-  if (!o.sat_axes.empty() && o.sat_axes[0].overlap < -touching) {
-    const HullGap gap = hull_gap(s);
-    o.exact.colliding = false;
-    o.exact.signed_depth = -gap.distance;
-    o.exact.normal = gap.distance > 0 ? Vec3((gap.on_b - gap.on_a) / gap.distance) : Vec3(-o.sat_axes[0].normal);
-  } else {
-    o.minkowski = MinkowskiDifference::build(s.world_a, s.world_b, o.error);
-    if (o.minkowski) o.exact = exact_depth(*o.minkowski, s);
-  }
   o.ccd = ask_libccd(s);
   o.touching = std::abs(o.exact.signed_depth) <= touching;
   o.axis_tie = has_axis_tie(o.sat_axes, s.length_tolerance(tol::kTie));
@@ -188,7 +177,7 @@ InvariantCheck check_agrees_with_gjk(const Context& c) {
   if (o.ccd.gjk_intersecting != o.exact.colliding)
     return {"agrees-with-gjk", CheckStatus::oracle_disagreement, 0, 0,
             std::string("GJK says ") + (o.ccd.gjk_intersecting ? "intersecting" : "separate") +
-                ", the Minkowski difference says " + (o.exact.colliding ? "intersecting" : "separate")};
+                ", the exact oracle says " + (o.exact.colliding ? "intersecting" : "separate")};
   const bool agree = c.colliding == o.ccd.gjk_intersecting;
   return measured("agrees-with-gjk", agree ? 0 : c.relative(std::abs(o.exact.signed_depth)),
                   c.relative(c.scene.length_tolerance(tol::kTouching)),
@@ -257,33 +246,27 @@ InvariantCheck check_normal_realises_depth(const Context& c) {
 }
 
 // Moving B by t keeps the hulls overlapping exactly when t lies in A - B, so
-// the exact test is a point-in-polytope test; GJK is asked the same question.
+// the exact test is a point-in-polytope test against the planes of A - B
+// (every candidate axis, both ways for edge pairs); GJK is asked too.
 InvariantCheck check_separates(const Context& c) {
   const OracleAnswers& o = c.oracles;
   if (!c.colliding) return skipped("separates", "not colliding");
-  // Clearly separated hulls have no A - B yet (consult_oracles); a generator
-  // that calls them colliding gets one built here.
-  std::optional<MinkowskiDifference> built;
-  std::string error;
-  if (!o.minkowski) built = MinkowskiDifference::build(c.scene.world_a, c.scene.world_b, error);
-  const MinkowskiDifference* difference = o.minkowski ? &*o.minkowski : built ? &*built : nullptr;
-  if (!difference) return skipped("separates", "the exact oracle failed: " + error);
   const double tol = c.scene.length_tolerance(tol::kSeparates);
   const Vec3 n = c.n.normalized();
   const Vec3 beyond = (c.depth + tol) * n;
-  double err = std::max(0.0, difference->depth_of(beyond));
+  double err = std::max(0.0, depth_after_moving_b(o.sat_axes, beyond));
   const char* what = "still overlapping after moving B by depth + tol";
   bool exact_separates = err == 0;
   bool gjk_disagrees = exact_separates && libccd_intersecting(c.scene, beyond);
   if (exact_separates && c.depth > 2 * tol) {
     const Vec3 short_of = (c.depth - tol) * n;
-    err = std::max(0.0, -difference->depth_of(short_of));
+    err = std::max(0.0, -depth_after_moving_b(o.sat_axes, short_of));
     what = "already separate after moving B by depth - tol";
     gjk_disagrees = err == 0 && !libccd_intersecting(c.scene, short_of);
   }
   if (err == 0 && gjk_disagrees)
     return {"separates", CheckStatus::oracle_disagreement, 0, c.relative(tol),
-            "the Minkowski difference and GJK disagree at depth +- tol"};
+            "the exact test and GJK disagree at depth +- tol"};
   return measured("separates", c.relative(err), 0.0, err > 0 ? what : "");
 }
 

@@ -10,7 +10,7 @@
 #include "manifuzz/abi.h"
 #include "oracles/brute_force_sat.h"
 #include "oracles/libccd_oracle.h"
-#include "oracles/minkowski_difference.h"
+#include "oracles/exact_depth.h"
 #include "scene.h"
 
 namespace mfz {
@@ -28,15 +28,11 @@ struct InvariantCheck {
 
 /// Everything the checks compare a manifold against, computed once per case.
 struct OracleAnswers {
-  /// Qhull's A - B: built unless a separating axis proves the hulls apart.
-  std::optional<MinkowskiDifference> minkowski;
   ExactDepth exact;
   std::vector<RankedAxis> sat_axes;  ///< brute-force SAT, best first
   LibccdAnswer ccd;
   bool touching = false;  ///< |exact depth or gap| within tol::kTouching
   bool axis_tie = false;  ///< two distinct minimal axes (tolerances.h kTie)
-  std::string error;      ///< non-empty when the exact oracle failed (Qhull could not build A - B)
-  bool exact_failed() const { return !error.empty(); }
 };
 
 OracleAnswers consult_oracles(const Scene& scene);

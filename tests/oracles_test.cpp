@@ -1,12 +1,16 @@
 #include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
 
 #include <cmath>
 
 #include "oracles/brute_force_sat.h"
+#include "oracles/exact_depth.h"
+#include "tolerances.h"
 #include "oracles/libccd_oracle.h"
 #include "closest_point.h"
 #include "oracles/hull_gap.h"
 #include "oracles/minkowski_difference.h"
+#include "families.h"
 #include "test_support.h"
 
 namespace mfz {
@@ -46,10 +50,41 @@ TEST(MinkowskiOracle, GapIsTheDistanceBetweenTheHullsCornerToCorner) {
   const auto md = MinkowskiDifference::build(s.world_a, s.world_b, error);
   // The planes alone give only a lower bound: the nearest plane is 0.4 away.
   EXPECT_NEAR(md->at_origin().signed_depth, -0.4, 1e-14);
-  const ExactDepth exact = exact_depth(*md, s);
+  const ExactDepth exact = exact_depth(s, rank_sat_axes(s));
   EXPECT_FALSE(exact.colliding);
   EXPECT_NEAR(exact.signed_depth, -std::hypot(0.3, 0.4), 1e-14);
   EXPECT_VEC_NEAR(exact.normal, Vec3(0.6, 0.8, 0), 1e-14);
+}
+
+TEST(ExactDepth, InsideIsTheLeastOverlapAndMovingBByItLeavesThemTouching) {
+  const Scene s = box_on_slab();
+  const auto axes = rank_sat_axes(s);
+  const ExactDepth exact = exact_depth(s, axes);
+  EXPECT_TRUE(exact.colliding);
+  EXPECT_NEAR(exact.signed_depth, 0.1, 1e-15);
+  EXPECT_VEC_NEAR(exact.normal, Vec3(0, 0, 1), 1e-15);
+  EXPECT_GT(depth_after_moving_b(axes, Vec3(0, 0, 0.0999)), 0);
+  EXPECT_NEAR(depth_after_moving_b(axes, Vec3(0, 0, 0.1)), 0, 1e-15);
+  EXPECT_LT(depth_after_moving_b(axes, Vec3(0, 0, 0.1001)), 0);
+  // Sideways B stays in contact until it slides off the slab's edge.
+  EXPECT_GT(depth_after_moving_b(axes, Vec3(2.4, 0, 0)), 0);
+  EXPECT_LT(depth_after_moving_b(axes, Vec3(2.6, 0, 0)), 0);
+}
+
+// An edge pair's facet of A - B can face either way: moving B against the
+// axis of least overlap must meet the facet on the other side.
+TEST(ExactDepth, MovingBAgainstAnEdgeAxisMeetsTheFacetBehind) {
+  const Quat ridge = test::about(Vec3(1, 0, 0), M_PI / 4), edge_down = test::about(Vec3(0, 1, 0), M_PI / 4);
+  const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {Vec3::Zero(), ridge}, box_points(0.5, 0.5, 0.5),
+                                           {Vec3(0, 0, std::sqrt(2.0) - 0.1), edge_down}));
+  const auto axes = rank_sat_axes(s);
+  ASSERT_EQ(axes[0].kind, AxisKind::edge_edge);
+  EXPECT_NEAR(exact_depth(s, axes).signed_depth, 0.1, 1e-14);
+  // Pushed down, B's top ridge leaves A's bottom ridge after 2 sqrt(2) - 0.1:
+  // the same edge directions, the facet of A - B on the other side.
+  const double behind = 2 * std::sqrt(2.0) - 0.1;
+  EXPECT_GT(depth_after_moving_b(axes, Vec3(0, 0, -(behind - 1e-3))), 0);
+  EXPECT_LT(depth_after_moving_b(axes, Vec3(0, 0, -(behind + 1e-3))), 0);
 }
 
 TEST(HullGap, EdgeAcrossEdgeIsTheDistanceBetweenTheEdges) {
@@ -137,6 +172,29 @@ TEST(LibccdOracle, SeparatedHullsDoNotIntersect) {
   EXPECT_FALSE(answer.gjk_intersecting);
   EXPECT_FALSE(answer.epa_ok);
   EXPECT_TRUE(libccd_intersecting(s, Vec3(-0.6, 0, 0)));
+}
+
+
+// The two exact oracles, over every family of the property suite: the least
+// overlap over every axis (what the suite uses) and Qhull's hull of the
+// vertex differences (the contract's example) give one depth, and one side.
+RC_GTEST_PROP(ExactOracles, LeastOverlapAndQhullsMinkowskiDifferenceAgree, ()) {
+  const props::GeneratedCase c = *props::any_case();
+  SceneBuild built = make_scene(c.file);
+  RC_PRE(built.scene.has_value());
+  const Scene& s = *built.scene;
+  std::string error;
+  const auto difference = MinkowskiDifference::build(s.world_a, s.world_b, error);
+  RC_ASSERT(difference.has_value());
+  const ExactDepth qhull = difference->at_origin();
+  const ExactDepth exact = exact_depth(s, rank_sat_axes(s));
+  const double tol = s.length_tolerance(tol::kDepth);
+  RC_TAG(exact.colliding ? "colliding" : "separated");
+  if (std::abs(exact.signed_depth) <= tol) return;  // touching: either side
+  RC_ASSERT(qhull.colliding == exact.colliding);
+  if (exact.colliding) RC_ASSERT(std::abs(qhull.signed_depth - exact.signed_depth) <= tol);
+  // Outside, Qhull's planes bound the gap from below.
+  else RC_ASSERT(qhull.signed_depth >= exact.signed_depth - tol);
 }
 
 }  // namespace

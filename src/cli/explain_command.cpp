@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "case_run.h"
+#include "oracles/minkowski_difference.h"
 #include "cli/arguments.h"
 #include "clipping_generator.h"
 #include "report.h"
@@ -82,9 +83,21 @@ void describe_clipping(std::ostream& out, const CaseRun& run) {
 void describe_oracles(std::ostream& out, const CaseRun& run) {
   const OracleAnswers& o = run.oracles;
   out << "\n6. Oracles:\n"
-      << "     exact (Minkowski difference A - B): " << (o.exact.colliding ? "depth " : "gap ")
-      << std::abs(o.exact.signed_depth) << ", direction " << vec_text(o.exact.normal)
-      << (o.touching ? "  (touching: within tolerance of zero)" : "") << "\n"
+      << "     exact (least overlap over every axis; the hulls' distance when apart): "
+      << (o.exact.colliding ? "depth " : "gap ") << std::abs(o.exact.signed_depth) << ", direction "
+      << vec_text(o.exact.normal) << (o.touching ? "  (touching: within tolerance of zero)" : "") << "\n";
+  std::string error;
+  if (const auto difference = MinkowskiDifference::build(run.scene.world_a, run.scene.world_b, error)) {
+    const ExactDepth qhull = difference->at_origin();
+    out << "     Qhull's A - B (hull of the vertex differences): ";
+    if (qhull.colliding)
+      out << "depth " << qhull.signed_depth << "\n";
+    else
+      out << "origin outside\n";
+  } else {
+    out << "     Qhull's A - B: " << error << "\n";
+  }
+  out
       << "     libccd GJK: " << (o.ccd.gjk_intersecting ? "intersecting" : "separate") << "\n";
   if (o.ccd.epa_ok) out << "     libccd EPA: depth " << o.ccd.epa_depth << " along " << vec_text(o.ccd.epa_direction) << "\n";
   if (o.ccd.mpr_ok) out << "     libccd MPR: depth " << o.ccd.mpr_depth << " along " << vec_text(o.ccd.mpr_direction) << "\n";

@@ -33,12 +33,13 @@ void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, s
     min_b = std::min(min_b, d), max_b = std::max(max_b, d);
   }
   const double along = max_a - min_b, against = max_b - min_a;
-  if (kind == AxisKind::face_a) return out.push_back({axis, along, kind, fa, fb});
-  if (kind == AxisKind::face_b) return out.push_back({-axis, against, kind, fa, fb});
+  constexpr double no_facet = INFINITY;
+  if (kind == AxisKind::face_a) return out.push_back({axis, along, no_facet, kind, fa, fb});
+  if (kind == AxisKind::face_b) return out.push_back({-axis, against, no_facet, kind, fa, fb});
   if (along <= against)
-    out.push_back({axis, along, kind, fa, fb});
+    out.push_back({axis, along, against, kind, fa, fb});
   else
-    out.push_back({-axis, against, kind, fa, fb});
+    out.push_back({-axis, against, along, kind, fa, fb});
 }
 
 }  // namespace
@@ -65,6 +66,15 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
   std::stable_sort(axes.begin(), axes.end(),
                    [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; });
   return axes;
+}
+
+double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t) {
+  double depth = INFINITY;
+  for (const RankedAxis& axis : axes) {
+    const double along = axis.normal.dot(t);
+    depth = std::min({depth, axis.overlap - along, axis.reverse_overlap + along});
+  }
+  return depth;
 }
 
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {

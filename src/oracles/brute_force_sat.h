@@ -2,9 +2,19 @@
 /// \file
 /// A brute-force separating-axis test over world-space vertex lists: every
 /// face normal of both hulls and every edge pair, every vertex projected, no
-/// pruning and no early exit. Slow and plain on purpose: the reference that
-/// optimised SATs are checked against, and the source of the ranked axes
-/// `explain` shows and of tie detection.
+/// pruning and no early exit. Plain on purpose: the reference that optimised
+/// SATs are checked against, the source of the ranked axes `explain` shows
+/// and of tie detection, and the exact depth.
+///
+/// Why exact: the overlap along a unit n is the support function of the
+/// Minkowski difference A - B, h(n) = max over A of n.a - min over B of n.b.
+/// Every facet normal of A - B is among the candidates (a face of A outward,
+/// a face of B inward, or the cross product of an edge of each), and for the
+/// origin inside A - B, h(n) >= (distance to the boundary) for every n. So
+/// the least overlap is the distance from the origin to the boundary of
+/// A - B, which is the contract's exact depth, computed without the
+/// generator's SAT. Qhull's hull of the vertex differences
+/// (minkowski_difference.h) gives the same number; a property checks that.
 #include <vector>
 
 #include "scene.h"
@@ -19,12 +29,20 @@ double directed_overlap(const std::vector<Vec3>& world_a, const std::vector<Vec3
 struct RankedAxis {
   Vec3 normal;  ///< unit, from A to B: a face of A outward, of B inward, an edge pair the smaller way
   double overlap = 0;
+  /// An edge pair's overlap along -normal (a facet of A - B may face either
+  /// way); +inf for a face axis, whose other way is no facet.
+  double reverse_overlap = 0;
   AxisKind kind = AxisKind::face_a;
   int feature_a = -1, feature_b = -1;
 };
 
 /// Every candidate axis with its overlap, smallest overlap first.
 std::vector<RankedAxis> rank_sat_axes(const Scene& scene);
+
+/// How deep B would still be after moving it by t: min over the candidates of
+/// overlap - n.t, both ways for edge pairs. Positive exactly when B moved by t
+/// still overlaps A (t inside A - B); outside, a negative lower bound.
+double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t);
 
 /// True when another candidate has an overlap within `tie` of the minimum and
 /// could lead to another manifold: another kind of axis, another face, or

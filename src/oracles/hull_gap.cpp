@@ -52,13 +52,4 @@ HullGap hull_gap(const Scene& s) {
   return {std::sqrt(nearest.distance_sq), nearest.on_a, nearest.on_b};
 }
 
-ExactDepth exact_depth(const MinkowskiDifference& difference, const Scene& scene) {
-  ExactDepth answer = difference.at_origin();
-  if (answer.colliding) return answer;
-  const HullGap gap = hull_gap(scene);
-  answer.signed_depth = -gap.distance;
-  if (gap.distance > 0) answer.normal = (gap.on_b - gap.on_a) / gap.distance;
-  return answer;
-}
-
 }  // namespace mfz

@@ -5,7 +5,6 @@
 /// each edge against each edge. For convex polyhedra the nearest pair of
 /// points is one of those, so the minimum is the gap, to rounding of the
 /// world coordinates alone. Independent of Qhull and of any axis test.
-#include "oracles/minkowski_difference.h"
 #include "scene.h"
 
 namespace mfz {
@@ -18,9 +17,5 @@ struct HullGap {
 /// Meaningful only when the posed hulls do not overlap (otherwise some
 /// feature pairs meet and the answer is 0).
 HullGap hull_gap(const Scene& scene);
-
-/// The exact oracle's answer: the depth from the Minkowski difference's
-/// planes where the origin is inside it, else the gap from hull_gap.
-ExactDepth exact_depth(const MinkowskiDifference& difference, const Scene& scene);
 
 }  // namespace mfz
