@@ -232,6 +232,7 @@ ClippingSteps seed_steps() {
   steps.significant_face_from_sat = false;
   steps.significant_face_over_ties = false;
   steps.reference_is_b = seed_reference_is_b;
+  steps.frame_at_a = false;
   return steps;
 }
 
@@ -244,10 +245,10 @@ ClippingSteps seed_steps() {
 //     reference face (Sutherland-Hodgman).
 //  5. Remove the points above the reference plane.
 //  6. Each remaining point is a contact with its own penetration.
-int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_pose_a, const mfz_hull& hull_b,
-                                   const mfz_pose& abi_pose_b, mfz_manifold& out, ClipTrace* trace,
-                                   const ClippingSteps& steps) {
-  const Pose pose_a = Pose::from_abi(abi_pose_a), pose_b = Pose::from_abi(abi_pose_b);
+namespace {
+
+int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_hull& hull_b, const Pose& pose_b,
+                          mfz_manifold& out, ClipTrace* trace, const ClippingSteps& steps) {
   const PosedHull a(hull_a, pose_a), b(hull_b, pose_b);
   const SatResult sat = steps.sat(a, b);
   if (trace) trace->sat = sat;
@@ -326,6 +327,30 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   if (out.contact_count == 0 && steps.significant_face_over_ties)
     deepest_vertex_contact(*reference.hull, *incident.hull, n, flipped, out);
   return 0;
+}
+
+void shift_contacts(mfz_manifold& out, const Vec3& by) {
+  for (int i = 0; i < out.contact_count; ++i) {
+    out.contacts[i].point_on_a = to_abi(Vec3(to_vec(out.contacts[i].point_on_a) + by));
+    out.contacts[i].point_on_b = to_abi(Vec3(to_vec(out.contacts[i].point_on_b) + by));
+  }
+}
+
+}  // namespace
+
+int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_pose_a, const mfz_hull& hull_b,
+                                   const mfz_pose& abi_pose_b, mfz_manifold& out, ClipTrace* trace,
+                                   const ClippingSteps& steps) {
+  const Pose pose_a = Pose::from_abi(abi_pose_a), pose_b = Pose::from_abi(abi_pose_b);
+  if (!steps.frame_at_a) return generate_in_frame(hull_a, pose_a, hull_b, pose_b, out, trace, steps);
+  const Vec3 origin = pose_a.position;
+  const Pose local_a{Vec3::Zero(), pose_a.orientation}, local_b{pose_b.position - origin, pose_b.orientation};
+  const int32_t status = generate_in_frame(hull_a, local_a, hull_b, local_b, out, trace, steps);
+  shift_contacts(out, origin);
+  if (trace)
+    for (ClipTrace::Step& step : trace->steps)
+      for (Vec3& p : step.polygon) p += origin;
+  return status;
 }
 
 }  // namespace mfz

@@ -50,6 +50,10 @@ struct ClippingSteps {
   /// that rounding makes furthest; F11: equally aligned incident faces are all
   /// clipped. Either way rounding does not choose the manifold.
   bool significant_face_over_ties = true;
+  /// F21: work in a frame whose origin is A's position, not the world's, so
+  /// that a far frame rounds B's pose once instead of rounding every
+  /// decision (which edge is deepest, which face ties) by eps M.
+  bool frame_at_a = true;
   /// The world polygon of a significant face.
   void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
   /// True when B's significant face is the reference face.
