@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <sstream>
 #include <utility>
 
@@ -75,7 +74,7 @@ void order_counter_clockwise(std::vector<int>& loop, const std::vector<Vec3>& po
 // an edge, or Qhull's merging left it inside a face): the contract lists
 // extreme points only, so it leaves every loop. Returns true when one was found.
 bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std::vector<Vec3>& points) {
-  std::map<int, int> faces_of;
+  std::vector<int> faces_of(points.size(), 0);
   for (const auto& loop : loops)
     for (int id : loop) ++faces_of[id];
   for (auto& loop : loops) {
@@ -110,21 +109,33 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
     hull.face_offsets_.push_back(static_cast<int32_t>(hull.face_vertices_.size()));
   }
   for (const Vec3& n : normals) hull.face_normals_.push_back(to_abi(n));
-  std::map<std::pair<int, int>, int> edge_of;
+  // Pair the loop steps by their undirected key: sorting beats a map here,
+  // and every relation builds hulls. Edges keep the order of their first step.
+  struct Step {
+    long long key;
+    int order, from, to, face;
+  };
+  std::vector<Step> steps;
+  const long long base = static_cast<long long>(hull.vertices_.size()) + 1;
   for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
     const auto& loop = loops[f];
     for (size_t k = 0; k < loop.size(); ++k) {
       const int a = loop[k], b = loop[(k + 1) % loop.size()];
-      const auto key = std::minmax(a, b);
-      auto found = edge_of.find(key);
-      if (found == edge_of.end()) {
-        edge_of.emplace(key, static_cast<int>(hull.edges_.size()));
-        hull.edges_.push_back({a, b, f, -1});
-      } else {
-        hull.edges_[found->second].face_right = f;
-      }
+      steps.push_back({std::min(a, b) * base + std::max(a, b), static_cast<int>(steps.size()), a, b, f});
     }
   }
+  std::sort(steps.begin(), steps.end(),
+            [](const Step& x, const Step& y) { return x.key != y.key ? x.key < y.key : x.order < y.order; });
+  std::vector<std::pair<int, HullEdge>> first_seen;
+  for (size_t i = 0; i < steps.size();) {
+    size_t j = i;
+    while (j + 1 < steps.size() && steps[j + 1].key == steps[i].key) ++j;
+    first_seen.push_back({steps[i].order, {steps[i].from, steps[i].to, steps[i].face, j > i ? steps[j].face : -1}});
+    i = j + 1;
+  }
+  std::sort(first_seen.begin(), first_seen.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [order, edge] : first_seen) hull.edges_.push_back(edge);
   hull.diameter_ = diameter_of(hull.vertices_);
   return hull;
 }
@@ -166,24 +177,22 @@ HullBuild build_hull(const std::vector<Vec3>& points) {
 }
 
 std::string validate_hull(const Hull& hull) {
-  std::ostringstream why;
   const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
   if (v < 4 || f < 4) return "fewer than four vertices or faces";
-  if (v - e + f != 2) {
-    why << "Euler characteristic V - E + F = " << v - e + f << ", not 2";
-    return why.str();
-  }
-  std::map<std::pair<int, int>, int> directed;
+  if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
+  std::vector<std::pair<int, int>> directed;
   for (int face = 0; face < f; ++face) {
     if (hull.face_size(face) < 3) return "a face has fewer than three vertices";
     for (int k = 0; k < hull.face_size(face); ++k)
-      ++directed[{hull.face_vertex(face, k), hull.face_vertex(face, (k + 1) % hull.face_size(face))}];
+      directed.push_back({hull.face_vertex(face, k), hull.face_vertex(face, (k + 1) % hull.face_size(face))});
   }
-  for (const auto& [edge, count] : directed)
-    if (count != 1 || directed.count({edge.second, edge.first}) != 1) {
-      why << "edge " << edge.first << "-" << edge.second << " is not shared by exactly two faces";
-      return why.str();
-    }
+  std::sort(directed.begin(), directed.end());
+  for (size_t i = 0; i < directed.size(); ++i) {
+    const auto [from, to] = directed[i];
+    const bool repeated = i + 1 < directed.size() && directed[i + 1] == directed[i];
+    if (repeated || !std::binary_search(directed.begin(), directed.end(), std::make_pair(to, from)))
+      return "edge " + std::to_string(from) + "-" + std::to_string(to) + " is not shared by exactly two faces";
+  }
   const double slack = tol::kHullConvexity * hull.diameter();
   for (int face = 0; face < f; ++face) {
     const Vec3 n = hull.face_normal(face);

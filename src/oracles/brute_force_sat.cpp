@@ -18,20 +18,34 @@ double directed_overlap(const std::vector<Vec3>& world_a, const std::vector<Vec3
 
 namespace {
 
+// World vertices as three arrays: the projections below are the oracle's
+// whole cost (E_A x E_B axes times V_A + V_B points), and plain arrays let
+// the compiler keep them in registers.
+struct PointColumns {
+  std::vector<double> x, y, z;
+  explicit PointColumns(const std::vector<Vec3>& points) {
+    for (const Vec3& p : points) x.push_back(p.x()), y.push_back(p.y()), z.push_back(p.z());
+  }
+  void project(const Vec3& axis, double& lowest, double& highest) const {
+    lowest = INFINITY, highest = -INFINITY;
+    const double ax = axis.x(), ay = axis.y(), az = axis.z();
+    for (size_t i = 0; i < x.size(); ++i) {
+      const double d = ax * x[i] + ay * y[i] + az * z[i];
+      lowest = d < lowest ? d : lowest;
+      highest = d > highest ? d : highest;
+    }
+  }
+};
+
 // A face of A counts outward and a face of B inward only: those are the faces
 // of the Minkowski difference (reversed, a face normal meets an edge or a
 // vertex of its hull). Edge pairs count either way.
-void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, std::vector<RankedAxis>& out) {
+void add_axis(const PointColumns& a, const PointColumns& b, const Vec3& axis, AxisKind kind, int fa, int fb,
+              std::vector<RankedAxis>& out) {
   // One pass gives both directions: along = max_a - min_b, against = max_b - min_a.
-  double min_a = INFINITY, max_a = -INFINITY, min_b = INFINITY, max_b = -INFINITY;
-  for (const Vec3& p : s.world_a) {
-    const double d = axis.dot(p);
-    min_a = std::min(min_a, d), max_a = std::max(max_a, d);
-  }
-  for (const Vec3& p : s.world_b) {
-    const double d = axis.dot(p);
-    min_b = std::min(min_b, d), max_b = std::max(max_b, d);
-  }
+  double min_a, max_a, min_b, max_b;
+  a.project(axis, min_a, max_a);
+  b.project(axis, min_b, max_b);
   const double along = max_a - min_b, against = max_b - min_a;
   constexpr double no_facet = INFINITY;
   if (kind == AxisKind::face_a) return out.push_back({axis, along, no_facet, kind, fa, fb});
@@ -42,15 +56,33 @@ void add_axis(const Scene& s, const Vec3& axis, AxisKind kind, int fa, int fb, s
     out.push_back({-axis, against, along, kind, fa, fb});
 }
 
+// Best first, but only as far as anyone reads: the axes within `window` of
+// the least overlap (and at least three) are sorted, stably; the rest follow
+// in no order. Sorting all E_A x E_B axes cost a tenth of a case.
+void rank_front(std::vector<RankedAxis>& axes, double window) {
+  if (axes.empty()) return;
+  double least = INFINITY;
+  for (const RankedAxis& axis : axes) least = std::min(least, axis.overlap);
+  auto front_end = std::stable_partition(axes.begin(), axes.end(),
+                                         [&](const RankedAxis& axis) { return axis.overlap <= least + window; });
+  const auto by_overlap = [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; };
+  if (front_end - axes.begin() < 3) {
+    front_end = axes.begin() + std::min<std::ptrdiff_t>(3, axes.size());
+    std::partial_sort(axes.begin(), front_end, axes.end(), by_overlap);
+  }
+  std::stable_sort(axes.begin(), front_end, by_overlap);
+}
+
 }  // namespace
 
 std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
+  const PointColumns a(s.world_a), b(s.world_b);
   std::vector<RankedAxis> axes;
   axes.reserve(s.hull_a.face_count() + s.hull_b.face_count() + s.hull_a.edges().size() * s.hull_b.edges().size());
   for (int f = 0; f < s.hull_a.face_count(); ++f)
-    add_axis(s, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1, axes);
+    add_axis(a, b, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1, axes);
   for (int f = 0; f < s.hull_b.face_count(); ++f)
-    add_axis(s, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f, axes);
+    add_axis(a, b, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f, axes);
   const auto& edges_a = s.hull_a.edges();
   const auto& edges_b = s.hull_b.edges();
   for (size_t i = 0; i < edges_a.size(); ++i) {
@@ -60,11 +92,10 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
       const Vec3 axis = ea.cross(eb);
       const double length = axis.norm();
       if (length <= tol::kParallelEdges * ea.norm() * eb.norm()) continue;
-      add_axis(s, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j), axes);
+      add_axis(a, b, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j), axes);
     }
   }
-  std::stable_sort(axes.begin(), axes.end(),
-                   [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; });
+  rank_front(axes, s.length_tolerance(kRankedWindow));
   return axes;
 }
 

@@ -36,7 +36,12 @@ struct RankedAxis {
   int feature_a = -1, feature_b = -1;
 };
 
-/// Every candidate axis with its overlap, smallest overlap first.
+/// Axes within this (x L) of the least overlap are ranked: a thousand times
+/// the tie tolerance, so that tie detection reads sorted axes only.
+inline constexpr double kRankedWindow = 1e-6;
+
+/// Every candidate axis with its overlap: least overlap first, sorted as far
+/// as kRankedWindow past it (at least three axes); the rest in no order.
 std::vector<RankedAxis> rank_sat_axes(const Scene& scene);
 
 /// How deep B would still be after moving it by t: min over the candidates of
