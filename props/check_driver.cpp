@@ -7,6 +7,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "case_shrinker.h"
 #include "families.h"
 
 namespace mfz::props {
@@ -119,9 +120,19 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
       Finding finding = *outcome.finding;
       log << "found " << finding.name << " at case " << index << ": " << finding.detail << "\nshrinking...\n";
       const auto minimal = shrink(shrinkable, finding, *generator, options.selection, result.shrink_steps);
+      GeneratedCase smallest = minimal.value();
+      result.shrink_steps += shrink_case_file(
+          smallest.file,
+          [&](const CaseFile& candidate) {
+            const CaseOutcome o = check_case(candidate, *generator, options.selection);
+            if (o.invalid || !o.finding || o.finding->name != finding.name) return false;
+            finding = *o.finding;
+            return true;
+          },
+          60);
       result.finding = finding;
       result.found_at_case = index;
-      result.case_path = write_case(options, minimal.value(), finding, index, result.minimised_text, error);
+      result.case_path = write_case(options, smallest, finding, index, result.minimised_text, error);
       if (result.case_path.empty()) return std::nullopt;
       break;
     }

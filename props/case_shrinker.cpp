@@ -1,0 +1,81 @@
+#include "case_shrinker.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace mfz::props {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+class Budget {
+ public:
+  explicit Budget(double seconds)
+      : end_(Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds))) {}
+  bool left() const { return Clock::now() < end_; }
+
+ private:
+  Clock::time_point end_;
+};
+
+// `value` with `digits` significant decimal digits.
+double rounded(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return std::strtod(text, nullptr);
+}
+
+// One pass of dropping points, last first (later points are the
+// families' decorations: duplicates, grid points, pushed-out corners).
+bool drop_points(CaseFile& c, std::vector<Vec3> CaseFile::*hull, const StillFails& still_fails, const Budget& budget,
+                 int& steps) {
+  bool dropped = false;
+  for (size_t i = (c.*hull).size(); i-- > 0 && budget.left();) {
+    if ((c.*hull).size() <= 4) break;
+    CaseFile candidate = c;
+    (candidate.*hull).erase((candidate.*hull).begin() + static_cast<long>(i));
+    if (still_fails(candidate)) c = std::move(candidate), dropped = true, ++steps;
+  }
+  return dropped;
+}
+
+// Rounds one number to zero, or to the fewest digits (1 to 6), that keep
+// the failure.
+bool round_number(CaseFile& c, double& number, const StillFails& still_fails, int& steps) {
+  const double original = number;
+  for (int digits = 0; digits <= 6; ++digits) {
+    const double shorter = digits == 0 ? 0.0 : rounded(original, digits);
+    if (shorter == original) break;
+    number = shorter;
+    if (still_fails(c)) return ++steps, true;
+  }
+  number = original;
+  return false;
+}
+
+bool round_points(CaseFile& c, std::vector<Vec3> CaseFile::*hull, const StillFails& still_fails,
+                  const Budget& budget, int& steps) {
+  bool changed = false;
+  for (size_t i = 0; i < (c.*hull).size() && budget.left(); ++i)
+    for (int axis = 0; axis < 3; ++axis) changed |= round_number(c, (c.*hull)[i](axis), still_fails, steps);
+  return changed;
+}
+
+}  // namespace
+
+int shrink_case_file(CaseFile& failing, const StillFails& still_fails, double seconds) {
+  const Budget budget(seconds);
+  int steps = 0;
+  bool changed = true;
+  while (changed && budget.left()) {
+    changed = drop_points(failing, &CaseFile::points_a, still_fails, budget, steps);
+    changed |= drop_points(failing, &CaseFile::points_b, still_fails, budget, steps);
+  }
+  round_points(failing, &CaseFile::points_a, still_fails, budget, steps);
+  round_points(failing, &CaseFile::points_b, still_fails, budget, steps);
+  return steps;
+}
+
+}  // namespace mfz::props

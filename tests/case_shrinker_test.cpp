@@ -1,0 +1,53 @@
+// The case-file shrinker: it drops every point the failure does not need
+// and rounds what is left, and never keeps a step that loses the failure.
+#include <gtest/gtest.h>
+
+#include "case_shrinker.h"
+#include "hull.h"
+#include "test_support.h"
+
+namespace mfz::props {
+namespace {
+
+int significant_digits(double x) {
+  for (int digits = 1; digits <= 17; ++digits) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*g", digits, x);
+    if (std::strtod(text, nullptr) == x) return digits;
+  }
+  return 17;
+}
+
+// A failure that needs one thing only: hull A reaches past x = 0.4.
+bool reaches_past(const CaseFile& c) {
+  if (!build_hull(c.points_a).hull || !build_hull(c.points_b).hull) return false;
+  for (const Vec3& p : c.points_a)
+    if (p.x() > 0.4) return true;
+  return false;
+}
+
+TEST(CaseShrinker, DropsDuplicatesAndInteriorPointsAndRoundsTheRest) {
+  CaseFile c = test::make_case(test::box_points(0.5123456789, 0.5123456789, 0.5123456789), {},
+                               test::box_points(1, 1, 1), {Vec3(3, 0, 0), Quat::Identity()});
+  c.points_a.push_back(c.points_a[3]);                        // a duplicate
+  c.points_a.push_back(Vec3(0.01234567, -0.0234567, 0.1));    // an interior point
+  ASSERT_TRUE(reaches_past(c));
+  const int steps = shrink_case_file(c, reaches_past, 10);
+  EXPECT_GT(steps, 0);
+  EXPECT_EQ(c.points_a.size(), 4u) << "a tetrahedron is the least hull";
+  EXPECT_EQ(c.points_b.size(), 4u);
+  ASSERT_TRUE(reaches_past(c)) << "the shrunk case must still fail";
+  for (const Vec3& p : c.points_a)
+    for (int k = 0; k < 3; ++k) EXPECT_LE(significant_digits(p(k)), 2) << p.transpose();
+}
+
+TEST(CaseShrinker, KeepsACaseThatCannotShrink) {
+  CaseFile c = test::make_case(test::tetrahedron_points(), {}, test::tetrahedron_points(), {});
+  const CaseFile before = c;
+  EXPECT_EQ(shrink_case_file(c, [](const CaseFile&) { return false; }, 10), 0);
+  EXPECT_EQ(c.points_a, before.points_a);
+  EXPECT_EQ(c.points_b, before.points_b);
+}
+
+}  // namespace
+}  // namespace mfz::props
