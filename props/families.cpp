@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "edge_arcs.h"
 #include "hull.h"
+#include "posed_hull.h"
 
 namespace mfz::props {
 namespace {
@@ -235,16 +237,56 @@ double any_overlap(double small_size, std::string& name) {
   }
 }
 
-// Places B so that along `d` (world, from A to B) it reaches `overlap` into A,
-// with a sideways offset.
+// How far B must move along -d, from where it is, to touch A: the entry of
+// the ray into A - B. Moving B by -s d changes the overlap along a unit n by
+// s (n . d); B touches A when the last facet of A - B with n . d > 0 stops
+// separating them: s = max of -overlap(n) / (n . d). The facet normals are
+// the face normals and the edge pairs whose Gauss arcs may cross.
+double entry_along(const Placed& a, const Placed& b, const Vec3& d) {
+  const mfz_hull view_a = a.hull.view(), view_b = b.hull.view();
+  const PosedHull pa(view_a, a.pose), pb(view_b, b.pose);
+  double entry = -INFINITY;
+  const auto offer = [&](const Vec3& n) {
+    const double along = n.dot(d);
+    if (!(along > 1e-12)) return;
+    const Interval ia = pa.project(n), ib = pb.project(n);
+    entry = std::max(entry, -(ia.max - ib.min) / along);
+  };
+  for (int f = 0; f < pa.face_count(); ++f) offer(pa.world_face_normal(f));
+  for (int f = 0; f < pb.face_count(); ++f) offer(-pb.world_face_normal(f));
+  const EdgeArcs arcs_a(pa), arcs_b(pb);
+  for (int i = 0; i < arcs_a.size(); ++i)
+    for (int j = 0; j < arcs_b.size(); ++j) {
+      if (arcs_a.complete() && arcs_b.complete() && !may_span_minkowski_face(arcs_a[i], arcs_b[j])) continue;
+      const Vec3 ea = pa.world_vertex(arcs_a[i].v1) - pa.world_vertex(arcs_a[i].v0);
+      const Vec3 eb = pb.world_vertex(arcs_b[j].v1) - pb.world_vertex(arcs_b[j].v0);
+      const Vec3 n = ea.cross(eb);
+      if (n.norm() <= 1e-12 * ea.norm() * eb.norm()) continue;
+      offer(n.normalized());
+      offer(-n.normalized());
+    }
+  return entry;
+}
+
+// Places B so that it reaches `overlap` into A along `d` (world, from A to
+// B), after a sideways offset of 0 to 0.3 of the smaller size: B is moved
+// along d until it just touches A (entry_along), then `overlap` further, so
+// that touching is touching and shallow is shallow whatever the features.
+// Placing by the supports along d alone left pointed features apart: two
+// thirds of the cases, most of the touching ones among them, never met.
 void place_along(const Placed& a, Placed& b, const Vec3& d, double overlap, double size) {
   b.pose.position = Vec3::Zero();
   const double reach_a = support(a.world(), d);
   const double reach_b = -support(b.world(), -d);
   const Vec3 side = any_perpendicular(d);
   const Vec3 other = d.cross(side);
+  static const double kOffsets[] = {0, 1e-3, 1e-2, 0.1, 0.3};
+  const double offset = kOffsets[pick(0, 4)] * size;
   const double along_side = digits(10), along_other = digits(10);
-  b.pose.position = (reach_a - reach_b - overlap) * d + size * (along_side * 0.3 * side + along_other * 0.3 * other);
+  b.pose.position = (reach_a - reach_b) * d + offset * (along_side * side + along_other * other);
+  const double entry = entry_along(a, b, d);
+  if (std::isfinite(entry)) b.pose.position -= entry * d;
+  b.pose.position -= overlap * d;
 }
 
 }  // namespace

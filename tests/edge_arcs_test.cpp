@@ -86,37 +86,37 @@ TEST(EdgeArcs, AHullWithAnOpenEdgeIsNotComplete) {
 }
 
 // world_extent: the largest world coordinate, whose ulps bound the rounding;
-// an edge axis turns by those ulps over the shortest edge.
-void expect_same_axis(const SatResult& pruned, const SatResult& every, double world_extent, double shortest_edge) {
+// touching: the contract's touching tolerance for the case (1e-9 L + ulps).
+void expect_same_answer(const SatResult& pruned, const SatResult& every, double world_extent, double touching) {
   RC_LOG() << "pruned: " << axis_kind_name(pruned.kind) << " " << pruned.feature_a << "/" << pruned.feature_b << " depth "
            << pruned.depth << " n " << pruned.normal.transpose() << "\nevery pair: " << axis_kind_name(every.kind) << " "
            << every.feature_a << "/" << every.feature_b << " depth " << every.depth << " n " << every.normal.transpose()
            << "\n";
   const double ulps = tol::kWorldUlps * std::numeric_limits<double>::epsilon();
-  if (pruned.separated != every.separated) {
-    // Touching: a parallel edge's axis rounds to a gap of a few ulps.
-    RC_ASSERT(std::abs(pruned.depth) <= ulps * world_extent);
-    RC_ASSERT(std::abs(every.depth) <= ulps * world_extent);
+  if (std::abs(every.depth) <= touching) {
+    // Touching: every axis through the touching point has overlap 0, so any
+    // of them is the axis, and F3's bias keeps a face axis a hair deeper
+    // than an edge axis that rounds to a gap. Both must say touching, or
+    // both separated (the first separating axis found ends SAT, whatever
+    // its gap).
+    RC_ASSERT((pruned.separated && every.separated) || std::abs(pruned.depth) <= touching);
     return;
   }
+  RC_ASSERT(pruned.separated == every.separated);
   if (pruned.separated) return;  // any separating axis will do
-  RC_ASSERT(pruned.kind == every.kind);
-  if (pruned.kind != AxisKind::edge_edge) {
-    RC_ASSERT(pruned.depth == every.depth);
-    RC_ASSERT(pruned.normal == every.normal);
-    RC_ASSERT(pruned.feature_a == every.feature_a);
-    RC_ASSERT(pruned.feature_b == every.feature_b);
-    return;
-  }
-  // Parallel edges of one hull give one axis; trying every pair meets a
-  // non-supporting one of them first, and its cross product rounds apart.
+  // The same depth to rounding. The axis itself may differ only where two
+  // facets of A - B tie (a symmetric deep case, to the world's rounding) or
+  // where parallel edges give one axis from other features; then
+  // normal-realises-depth holds for either.
   RC_ASSERT(std::abs(pruned.depth - every.depth) <= ulps * (world_extent + std::abs(every.depth)));
-  RC_ASSERT((pruned.normal - every.normal).norm() <= 1e-12 + ulps * world_extent / shortest_edge);
+  if (pruned.kind == every.kind && pruned.kind != AxisKind::edge_edge && pruned.feature_a == every.feature_a &&
+      pruned.feature_b == every.feature_b)
+    RC_ASSERT(pruned.normal == every.normal);
 }
 
 // Over every family of the property suite (folds, slabs, 64-gons, far
-// frames): the pruned pairs never change the axis, bit for bit.
-RC_GTEST_PROP(SatPruning, GivesTheAxisThatTryingEveryEdgePairGives, ()) {
+// frames): the pruned pairs never change the depth or the side.
+RC_GTEST_PROP(SatPruning, GivesTheDepthThatTryingEveryEdgePairGives, ()) {
   const props::GeneratedCase c = *props::any_case();
   HullBuild a = build_hull(c.file.points_a), b = build_hull(c.file.points_b);
   RC_PRE(a.hull.has_value() && b.hull.has_value());
@@ -129,13 +129,9 @@ RC_GTEST_PROP(SatPruning, GivesTheAxisThatTryingEveryEdgePairGives, ()) {
   double extent = 0;
   for (int i = 0; i < va.vertex_count; ++i) extent = std::max(extent, posed_a.world_vertex(i).cwiseAbs().maxCoeff());
   for (int i = 0; i < vb.vertex_count; ++i) extent = std::max(extent, posed_b.world_vertex(i).cwiseAbs().maxCoeff());
-  double shortest = INFINITY;
-  for (const PosedHull* h : {&posed_a, &posed_b}) {
-    const EdgeArcs arcs(*h);
-    for (int i = 0; i < arcs.size(); ++i)
-      shortest = std::min(shortest, (h->world_vertex(arcs[i].v1) - h->world_vertex(arcs[i].v0)).norm());
-  }
-  expect_same_axis(run_sat(posed_a, posed_b), run_sat_every_pair(posed_a, posed_b), extent, shortest);
+  const double scale = std::max(a.hull->diameter(), b.hull->diameter());
+  const double touching = tol::kTouching * scale + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
+  expect_same_answer(run_sat(posed_a, posed_b), run_sat_every_pair(posed_a, posed_b), extent, touching);
 }
 
 }  // namespace
