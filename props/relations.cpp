@@ -125,38 +125,6 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
 
 // ---- the transformed cases ----
 
-Hull scaled(const Hull& h, double s) {
-  std::vector<Vec3> vertices;
-  std::vector<std::vector<int>> loops;
-  std::vector<Vec3> normals;
-  for (int i = 0; i < h.vertex_count(); ++i) vertices.push_back(s * h.vertex(i));
-  for (int f = 0; f < h.face_count(); ++f) {
-    loops.emplace_back();
-    for (int k = 0; k < h.face_size(f); ++k) loops.back().push_back(h.face_vertex(f, k));
-    normals.push_back(h.face_normal(f));
-  }
-  return Hull::from_faces(vertices, loops, normals);
-}
-
-// The same hull as permuted input points give it: vertices in reverse order,
-// faces in reverse order, each loop starting one vertex later. Qhull would
-// number a permuted cloud its own way, or often the same way; this
-// permutation moves every index, and costs no hull build.
-Hull reordered(const Hull& h) {
-  const int last = h.vertex_count() - 1;
-  std::vector<Vec3> vertices;
-  std::vector<std::vector<int>> loops;
-  std::vector<Vec3> normals;
-  for (int i = last; i >= 0; --i) vertices.push_back(h.vertex(i));
-  for (int f = h.face_count() - 1; f >= 0; --f) {
-    const int n = h.face_size(f);
-    loops.emplace_back();
-    for (int k = 1; k <= n; ++k) loops.back().push_back(last - h.face_vertex(f, k % n));
-    normals.push_back(h.face_normal(f));
-  }
-  return Hull::from_faces(vertices, loops, normals);
-}
-
 // Every face split into a fan of triangles with the face's normal, as a mesh
 // exported from a modelling tool arrives.
 Hull triangulated(const Hull& h) {
@@ -252,7 +220,7 @@ std::optional<Finding> far_from_origin(const RelationInput& in, GeneratorSession
 
 std::optional<Finding> scale(const RelationInput& in, GeneratorSession& g) {
   const double s = 2;  // a power of two: the scaled input is exact
-  const Hull a = scaled(in.scene.hull_a, s), b = scaled(in.scene.hull_b, s);
+  const Hull a = in.scene.hull_a.scaled(s), b = in.scene.hull_b.scaled(s);
   Pose pa = in.scene.pose_a, pb = in.scene.pose_b;
   pa.position *= s;
   pb.position *= s;
@@ -265,7 +233,7 @@ std::optional<Finding> scale(const RelationInput& in, GeneratorSession& g) {
 }
 
 std::optional<Finding> vertex_order(const RelationInput& in, GeneratorSession& g) {
-  const Hull a = reordered(in.scene.hull_a), b = reordered(in.scene.hull_b);
+  const Hull a = in.scene.hull_a.renumbered(), b = in.scene.hull_b.renumbered();
   mfz_manifold out;
   if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, "vertex-order")) return f;
   return finding_if("vertex-order", compare(answer_of(in.manifold), answer_of(out), in, tolerances_for(in.scene)));

@@ -99,6 +99,30 @@ mfz_hull Hull::view() const {
           face_normals_.data()};
 }
 
+Hull Hull::scaled(double s) const {
+  Hull out = *this;
+  for (mfz_vec3& v : out.vertices_) v = to_abi(Vec3(s * to_vec(v)));
+  out.diameter_ = s * diameter_;
+  return out;
+}
+
+Hull Hull::renumbered() const {
+  const int last = vertex_count() - 1, faces = face_count();
+  Hull out;
+  out.vertices_.assign(vertices_.rbegin(), vertices_.rend());
+  out.face_normals_.assign(face_normals_.rbegin(), face_normals_.rend());
+  out.face_offsets_.push_back(0);
+  for (int f = faces - 1; f >= 0; --f) {
+    const int n = face_size(f);
+    for (int k = 1; k <= n; ++k) out.face_vertices_.push_back(last - face_vertex(f, k % n));
+    out.face_offsets_.push_back(static_cast<int32_t>(out.face_vertices_.size()));
+  }
+  for (const HullEdge& e : edges_)
+    out.edges_.push_back({last - e.v0, last - e.v1, faces - 1 - e.face_left, faces - 1 - e.face_right});
+  out.diameter_ = diameter_;
+  return out;
+}
+
 Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,
                       std::vector<Vec3> normals) {
   Hull hull;

@@ -38,6 +38,13 @@ class Hull {
   /// The ABI view; valid while this hull lives and is not moved.
   mfz_hull view() const;
 
+  /// This hull scaled about its local origin by `s` > 0 (metamorphic relations).
+  Hull scaled(double s) const;
+  /// This hull numbered the other way: vertices and faces in reverse order,
+  /// each loop starting one vertex later. The same polyhedron; every index
+  /// moves (the vertex-order relation).
+  Hull renumbered() const;
+
   /// Assembles a hull from loops and normals already computed (hull builder,
   /// tests); computes edges and diameter. No validation: see `validate_hull`.
   static Hull from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,

@@ -124,6 +124,46 @@ TEST(HullBuilding, CollinearAndCoincidentPointsAreErrors) {
   EXPECT_FALSE(build_hull({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}}).hull);
 }
 
+// Each edge's left face holds the step v0 -> v1, its right face v1 -> v0.
+void expect_edges_match_loops(const Hull& h) {
+  const auto holds_step = [&](int f, int from, int to) {
+    for (int k = 0; k < h.face_size(f); ++k)
+      if (h.face_vertex(f, k) == from && h.face_vertex(f, (k + 1) % h.face_size(f)) == to) return true;
+    return false;
+  };
+  for (const HullEdge& e : h.edges()) {
+    EXPECT_TRUE(holds_step(e.face_left, e.v0, e.v1));
+    EXPECT_TRUE(holds_step(e.face_right, e.v1, e.v0));
+  }
+}
+
+TEST(HullRenumbering, IsTheSamePolyhedronWithEveryIndexMoved) {
+  const Hull h = *build_hull(test::tetrahedron_points()).hull;
+  const Hull r = h.renumbered();
+  EXPECT_EQ(validate_hull(r), "");
+  expect_edges_match_loops(r);
+  ASSERT_EQ(r.vertex_count(), h.vertex_count());
+  ASSERT_EQ(r.face_count(), h.face_count());
+  const int last = h.vertex_count() - 1;
+  for (int i = 0; i <= last; ++i) EXPECT_EQ(r.vertex(i), h.vertex(last - i));
+  for (int f = 0; f < h.face_count(); ++f) {
+    const int g = h.face_count() - 1 - f;
+    EXPECT_EQ(r.face_normal(g), h.face_normal(f));
+    EXPECT_EQ(r.face_vertex(g, 0), last - h.face_vertex(f, 1)) << "each loop starts one vertex later";
+  }
+  EXPECT_EQ(r.diameter(), h.diameter());
+}
+
+TEST(HullScaling, ScalesVerticesAndDiameterAndKeepsTheFaces) {
+  const Hull h = *build_hull(box_points(1, 2, 3)).hull;
+  const Hull s = h.scaled(2);
+  EXPECT_EQ(validate_hull(s), "");
+  expect_edges_match_loops(s);
+  for (int i = 0; i < h.vertex_count(); ++i) EXPECT_EQ(s.vertex(i), 2 * h.vertex(i));
+  EXPECT_EQ(s.diameter(), 2 * h.diameter());
+  EXPECT_NEAR(s.face_offset(0), 2 * h.face_offset(0), 1e-15);
+}
+
 TEST(HullValidation, RejectsAFlippedFaceLoop) {
   // A tetrahedron with one face's loop reversed: that edge pair no longer matches.
   const std::vector<Vec3> v = test::tetrahedron_points();
