@@ -22,6 +22,13 @@ double since(Clock::time_point start) { return std::chrono::duration<double>(Clo
 class Statistics {
  public:
   void count(const std::string& table, const std::string& key) { ++tables_[table][key]; }
+  /// One table's counts on one line, for the progress report.
+  void print_counts(std::ostream& out, const std::string& table) const {
+    const auto found = tables_.find(table);
+    if (found == tables_.end()) return;
+    out << table << ":";
+    for (const auto& [key, n] : found->second) out << " " << key << " " << n;
+  }
   void print(std::ostream& out, long long total) const {
     for (const auto& [table, rows] : tables_) {
       out << "  " << table << ":";
@@ -140,7 +147,9 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
     if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
       last_progress = now;
       log << "  " << result.cases << " cases, " << static_cast<long long>(result.cases / now) << " cases/s, "
-          << result.invalid << " invalid\n";
+          << result.invalid << " invalid; ";
+      stats.print_counts(log, "placement");
+      log << "\n";
     }
   }
   result.seconds = since(started);
