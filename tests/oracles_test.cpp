@@ -143,6 +143,19 @@ TEST(BruteForceSat, CoincidentCubesTieBetweenOppositeAxes) {
   EXPECT_TRUE(has_axis_tie(rank_sat_axes(s), 1e-9));
 }
 
+// Two needles crossing through each other (a minimised case from check)
+// overlap by about their thickness along the edge axis either way: n and -n
+// are both minimal, and only the reverse overlap shows it.
+TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
+  const CaseParse parsed = read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = scene_of(*parsed.value);
+  const auto axes = rank_sat_axes(s);
+  ASSERT_EQ(axes[0].kind, AxisKind::edge_edge);
+  EXPECT_LE(axes[0].reverse_overlap - axes[0].overlap, s.length_tolerance(1e-9));
+  EXPECT_TRUE(has_axis_tie(axes, s.length_tolerance(1e-9)));
+}
+
 TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {
   const LibccdAnswer answer = ask_libccd(box_on_slab());
   EXPECT_TRUE(answer.gjk_intersecting);

@@ -120,6 +120,11 @@ bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   // "Along one direction" is the generator's coplanarity (a sine of 1e-11):
   // a cosine test cannot see angles near 1e-6, as 1 - cos underflows.
   const RankedAxis& best = ranked[0];
+  // An edge pair's other way is a facet of A - B too: crossing needles
+  // overlap by their thickness both ways, and n and -n tie (the contract's
+  // symmetric case). Those overlaps are not ranked, so every axis is read.
+  for (const RankedAxis& axis : ranked)
+    if (axis.reverse_overlap - best.overlap <= tie) return true;
   int face_a = -1, face_b = -1;
   for (size_t k = 0; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
     const RankedAxis& other = ranked[k];

@@ -51,7 +51,8 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t);
 
 /// True when another candidate has an overlap within `tie` of the minimum and
 /// could lead to another manifold: another kind of axis, another face, or
-/// another direction (CONTRACT.md, "Ties").
+/// another direction, the reverse of an edge pair's axis included
+/// (CONTRACT.md, "Ties").
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie);
 
 }  // namespace mfz
