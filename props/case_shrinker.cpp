@@ -63,6 +63,13 @@ bool round_points(CaseFile& c, std::vector<Vec3> CaseFile::*hull, const StillFai
   return changed;
 }
 
+// A pose's position and quaternion: make_scene normalises the quaternion,
+// so its components round like any number.
+void round_pose(CaseFile& c, Pose CaseFile::*pose, const StillFails& still_fails, const Budget& budget, int& steps) {
+  for (int axis = 0; axis < 3 && budget.left(); ++axis) round_number(c, (c.*pose).position(axis), still_fails, steps);
+  for (int k = 0; k < 4 && budget.left(); ++k) round_number(c, (c.*pose).orientation.coeffs()(k), still_fails, steps);
+}
+
 }  // namespace
 
 int shrink_case_file(CaseFile& failing, const StillFails& still_fails, double seconds) {
@@ -75,6 +82,8 @@ int shrink_case_file(CaseFile& failing, const StillFails& still_fails, double se
   }
   round_points(failing, &CaseFile::points_a, still_fails, budget, steps);
   round_points(failing, &CaseFile::points_b, still_fails, budget, steps);
+  round_pose(failing, &CaseFile::pose_a, still_fails, budget, steps);
+  round_pose(failing, &CaseFile::pose_b, still_fails, budget, steps);
   return steps;
 }
 

@@ -3,7 +3,8 @@
 /// Shrinking a failing case file itself, after RapidCheck's shrink tree has
 /// done what the families allow: drop whole points (a duplicate or an
 /// interior point never changes the hull, and the families cannot tell), and
-/// round each coordinate to as few significant digits as keep the failure.
+/// round each coordinate, position and quaternion component to zero or as
+/// few significant digits as keep the failure.
 /// What a person reads in the case file is what is left.
 #include <functional>
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <cstdio>
 
 #include "hull_distance.h"
 #include "oracles/exact_depth.h"
@@ -74,11 +74,17 @@ InvariantCheck measured(const char* name, double error, double tolerance, std::s
 
 InvariantCheck skipped(const char* name, std::string why) { return {name, CheckStatus::skipped, 0, 0, std::move(why)}; }
 
+// printf-style, for the one-line details: a stream per check cost more than
+// the checks' arithmetic.
+template <class... Numbers>
+std::string text(const char* format, Numbers... numbers) {
+  char line[256];
+  std::snprintf(line, sizeof line, format, numbers...);
+  return line;
+}
+
 std::string describe(const char* what, int contact) {
-  std::ostringstream s;
-  s << what;
-  if (contact >= 0) s << " (contact " << contact << ")";
-  return s.str();
+  return contact >= 0 ? text("%s (contact %d)", what, contact) : std::string(what);
 }
 
 // finite also covers fields out of range: a colliding flag other than 0 or 1,
@@ -188,10 +194,8 @@ InvariantCheck check_agrees_with_gjk(const Context& c) {
 InvariantCheck check_depth_exact(const Context& c) {
   if (!c.colliding) return skipped("depth-exact", "not colliding");
   const double tol = c.scene.length_tolerance(tol::kDepth);
-  std::ostringstream detail;
-  detail << "depth " << c.depth << ", exact " << c.oracles.exact.signed_depth;
   return measured("depth-exact", c.relative(std::abs(c.depth - c.oracles.exact.signed_depth)), c.relative(tol),
-                  detail.str());
+                  text("depth %g, exact %g", c.depth, c.oracles.exact.signed_depth));
 }
 
 InvariantCheck check_depth_within_epa_bounds(const Context& c) {
@@ -203,9 +207,8 @@ InvariantCheck check_depth_within_epa_bounds(const Context& c) {
             c.relative(tol_epa), "EPA's depth exceeds the exact depth"};
   const double upper = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
   const double err = std::max({0.0, o.ccd.epa_depth - c.depth, c.depth - upper});
-  std::ostringstream detail;
-  detail << "EPA " << o.ccd.epa_depth << " <= depth " << c.depth << " <= " << upper;
-  return measured("depth-within-epa-bounds", c.relative(err), c.relative(tol_epa), detail.str());
+  return measured("depth-within-epa-bounds", c.relative(err), c.relative(tol_epa),
+                  text("EPA %g <= depth %g <= %g", o.ccd.epa_depth, c.depth, upper));
 }
 
 InvariantCheck check_normal_agrees_with_epa(const Context& c) {
@@ -221,28 +224,24 @@ InvariantCheck check_normal_agrees_with_epa(const Context& c) {
   // itself: at small depths its depth can be right and its direction not.
   const double along_epa = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
   if (std::abs(along_epa - o.exact.signed_depth) > tol_epa) {
-    std::ostringstream why;
-    why << "EPA's direction does not realise the exact depth: overlap along it " << along_epa << ", exact depth "
-        << o.exact.signed_depth;
     return {"normal-agrees-with-epa", CheckStatus::oracle_disagreement, c.relative(std::abs(along_epa - o.exact.signed_depth)),
-            c.relative(tol_epa), why.str()};
+            c.relative(tol_epa),
+            text("EPA's direction does not realise the exact depth: overlap along it %g, exact depth %g", along_epa,
+                 o.exact.signed_depth)};
   }
   // A tie: both axes are minimal, EPA's and n, each realising the depth.
   const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
-  std::ostringstream detail;
-  detail << "angle to EPA " << angle << " rad; overlap along EPA's direction " << along_epa << ", along n "
-         << along_n << ", depth " << c.depth;
   const double err = std::max(std::abs(along_epa - c.depth), std::abs(along_n - c.depth));
-  return measured("normal-agrees-with-epa", c.relative(err), c.relative(tol_epa), detail.str());
+  return measured("normal-agrees-with-epa", c.relative(err), c.relative(tol_epa),
+                  text("angle to EPA %g rad; overlap along EPA's direction %g, along n %g, depth %g", angle, along_epa,
+                       along_n, c.depth));
 }
 
 InvariantCheck check_normal_realises_depth(const Context& c) {
   if (!c.colliding) return skipped("normal-realises-depth", "not colliding");
   const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
-  std::ostringstream detail;
-  detail << "overlap along n " << along_n << ", depth " << c.depth;
   return measured("normal-realises-depth", c.relative(std::abs(along_n - c.depth)),
-                  c.relative(c.scene.length_tolerance(tol::kDepth)), detail.str());
+                  c.relative(c.scene.length_tolerance(tol::kDepth)), text("overlap along n %g, depth %g", along_n, c.depth));
 }
 
 // Moving B by t keeps the hulls overlapping exactly when t lies in A - B, so

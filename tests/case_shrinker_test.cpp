@@ -41,6 +41,20 @@ TEST(CaseShrinker, DropsDuplicatesAndInteriorPointsAndRoundsTheRest) {
     for (int k = 0; k < 3; ++k) EXPECT_LE(significant_digits(p(k)), 2) << p.transpose();
 }
 
+TEST(CaseShrinker, RoundsPosesAsFarAsTheFailureAllows) {
+  CaseFile c = test::make_case(test::tetrahedron_points(), {Vec3(0.123456789, 2.5, -7.25), Quat::Identity()},
+                               test::tetrahedron_points(), {Vec3(3.3333333, 0, 0), test::about(Vec3(0, 0, 1), 0.1)});
+  // Fails while B stays more than 3 to the right of A (and B's quaternion is
+  // not zero, which make_scene refuses).
+  const auto apart = [](const CaseFile& k) {
+    return k.pose_b.orientation.norm() > 0 && k.pose_b.position.x() - k.pose_a.position.x() > 3;
+  };
+  shrink_case_file(c, apart, 10);
+  EXPECT_EQ(c.pose_a.position, Vec3::Zero());
+  EXPECT_EQ(c.pose_b.position.x(), 3.3) << "0 and 3 no longer fail";
+  EXPECT_EQ(c.pose_b.orientation.coeffs(), Quat::Identity().coeffs()) << "x, y, z to 0, w to one digit";
+}
+
 TEST(CaseShrinker, KeepsACaseThatCannotShrink) {
   CaseFile c = test::make_case(test::tetrahedron_points(), {}, test::tetrahedron_points(), {});
   const CaseFile before = c;

@@ -157,7 +157,7 @@ TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
 }
 
 TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {
-  const LibccdAnswer answer = ask_libccd(box_on_slab());
+  const LibccdAnswer answer = ask_libccd(box_on_slab(), /*with_mpr=*/true);
   EXPECT_TRUE(answer.gjk_intersecting);
   ASSERT_TRUE(answer.epa_ok);
   EXPECT_NEAR(answer.epa_depth, 0.1, 1e-7);

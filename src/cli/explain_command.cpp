@@ -100,7 +100,9 @@ void describe_oracles(std::ostream& out, const CaseRun& run) {
   out
       << "     libccd GJK: " << (o.ccd.gjk_intersecting ? "intersecting" : "separate") << "\n";
   if (o.ccd.epa_ok) out << "     libccd EPA: depth " << o.ccd.epa_depth << " along " << vec_text(o.ccd.epa_direction) << "\n";
-  if (o.ccd.mpr_ok) out << "     libccd MPR: depth " << o.ccd.mpr_depth << " along " << vec_text(o.ccd.mpr_direction) << "\n";
+  const LibccdAnswer with_mpr = ask_libccd(run.scene, /*with_mpr=*/true);
+  if (with_mpr.mpr_ok)
+    out << "     libccd MPR: depth " << with_mpr.mpr_depth << " along " << vec_text(with_mpr.mpr_direction) << "\n";
 }
 
 }  // namespace

@@ -27,13 +27,19 @@ struct PointColumns {
     for (const Vec3& p : points) x.push_back(p.x()), y.push_back(p.y()), z.push_back(p.z());
   }
   void project(const Vec3& axis, double& lowest, double& highest) const {
-    lowest = INFINITY, highest = -INFINITY;
+    double low = INFINITY, high = -INFINITY;
     const double ax = axis.x(), ay = axis.y(), az = axis.z();
-    for (size_t i = 0; i < x.size(); ++i) {
-      const double d = ax * x[i] + ay * y[i] + az * z[i];
-      lowest = d < lowest ? d : lowest;
-      highest = d > highest ? d : highest;
+    const double *px = x.data(), *py = y.data(), *pz = z.data();
+    const size_t n = x.size();
+    // The points are finite (hulls are validated), so min and max may run
+    // in vector lanes in any order: the result is the same number.
+#pragma omp simd reduction(min : low) reduction(max : high)
+    for (size_t i = 0; i < n; ++i) {
+      const double d = ax * px[i] + ay * py[i] + az * pz[i];
+      low = d < low ? d : low;
+      high = d > high ? d : high;
     }
+    lowest = low, highest = high;
   }
 };
 
@@ -85,13 +91,19 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
     add_axis(a, b, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f, axes);
   const auto& edges_a = s.hull_a.edges();
   const auto& edges_b = s.hull_b.edges();
+  std::vector<Vec3> vectors_b;
+  std::vector<double> lengths_b;
+  for (const HullEdge& e : edges_b) {
+    vectors_b.push_back(s.world_b[e.v1] - s.world_b[e.v0]);
+    lengths_b.push_back(vectors_b.back().norm());
+  }
   for (size_t i = 0; i < edges_a.size(); ++i) {
     const Vec3 ea = s.world_a[edges_a[i].v1] - s.world_a[edges_a[i].v0];
+    const double length_a = ea.norm();
     for (size_t j = 0; j < edges_b.size(); ++j) {
-      const Vec3 eb = s.world_b[edges_b[j].v1] - s.world_b[edges_b[j].v0];
-      const Vec3 axis = ea.cross(eb);
+      const Vec3 axis = ea.cross(vectors_b[j]);
       const double length = axis.norm();
-      if (length <= tol::kParallelEdges * ea.norm() * eb.norm()) continue;
+      if (length <= tol::kParallelEdges * length_a * lengths_b[j]) continue;
       add_axis(a, b, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j), axes);
     }
   }

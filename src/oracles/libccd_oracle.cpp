@@ -71,7 +71,7 @@ Vec3 to_unit(const ccd_vec3_t& v) {
 
 }  // namespace
 
-LibccdAnswer ask_libccd(const Scene& s) {
+LibccdAnswer ask_libccd(const Scene& s, bool with_mpr) {
   const Rescaled frame(s, Vec3::Zero());
   const ccd_t ccd = settings();
   LibccdAnswer answer;
@@ -83,7 +83,7 @@ LibccdAnswer ask_libccd(const Scene& s) {
     answer.epa_depth = depth * s.scale;
     answer.epa_direction = to_unit(dir);
   }
-  if (ccdMPRPenetration(&frame.a, &frame.b, &ccd, &depth, &dir, &pos) == 0) {
+  if (with_mpr && ccdMPRPenetration(&frame.a, &frame.b, &ccd, &depth, &dir, &pos) == 0) {
     answer.mpr_ok = true;
     answer.mpr_depth = depth * s.scale;
     answer.mpr_direction = to_unit(dir);

@@ -19,7 +19,9 @@ struct LibccdAnswer {
   Vec3 mpr_direction = Vec3::UnitZ();
 };
 
-LibccdAnswer ask_libccd(const Scene& scene);
+/// GJK and EPA, and MPR when `with_mpr` (only `explain` shows MPR; no
+/// invariant reads it).
+LibccdAnswer ask_libccd(const Scene& scene, bool with_mpr = false);
 
 /// GJK's verdict on the scene with B moved by `translation` (world units).
 bool libccd_intersecting(const Scene& scene, const Vec3& translation);
