@@ -33,16 +33,25 @@ int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edge
       const int n = hull.face_size(f);
       for (int k = 0; k < n; ++k) {
         const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
-        if (v0 < v1) visit(hull.world_vertex(v0), hull.world_vertex(v1));
+        if (v0 < v1) visit(v0, v1, f, std::min(direction.dot(hull.world_vertex(v0)), direction.dot(hull.world_vertex(v1))));
       }
     }
   };
-  each_edge([&](const Vec3& from, const Vec3& to) { best = std::max(best, std::min(direction.dot(from), direction.dot(to))); });
+  // F22: a diagonal between two triangles of one face is no edge (as in F4);
+  // it would add a contact that the face untriangulated does not have.
+  // Asked only of an edge that would count, since the test scans loops.
+  const auto flat = [&](int v0, int v1, int f) {
+    const int other = hull.face_across(v0, v1);
+    return other >= 0 && coplanar_normals(hull.world_face_normal(other), hull.world_face_normal(f));
+  };
+  each_edge([&](int v0, int v1, int f, double reach) {
+    if (reach > best && !flat(v0, v1, f)) best = reach;
+  });
   const double slack = tol::kTie * (best - lowest) + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * std::abs(best);
   int count = 0;
-  each_edge([&](const Vec3& from, const Vec3& to) {
-    if (count < kMaxSupportingEdges && std::min(direction.dot(from), direction.dot(to)) >= best - slack)
-      edges[count++] = {from, to};
+  each_edge([&](int v0, int v1, int f, double reach) {
+    if (count < kMaxSupportingEdges && reach >= best - slack && !flat(v0, v1, f))
+      edges[count++] = {hull.world_vertex(v0), hull.world_vertex(v1)};
   });
   return count;
 }
