@@ -1,6 +1,7 @@
 #include "families.h"
 
 #include <cmath>
+#include <optional>
 
 #include "edge_arcs.h"
 #include "hull.h"
@@ -174,10 +175,16 @@ struct Placed {
   }
 };
 
-double support(const std::vector<Vec3>& points, const Vec3& d) {
+// The middle of the points furthest along d: a face's, an edge's, or a
+// vertex. Placing B's at A's makes the features the placement names meet.
+Vec3 support_centre(const std::vector<Vec3>& points, const Vec3& d, double size) {
   double best = -INFINITY;
   for (const Vec3& p : points) best = std::max(best, d.dot(p));
-  return best;
+  Vec3 sum = Vec3::Zero();
+  int count = 0;
+  for (const Vec3& p : points)
+    if (d.dot(p) >= best - 1e-12 * size) sum += p, ++count;
+  return sum / count;
 }
 
 Vec3 centroid(const Hull& h) {
@@ -239,18 +246,28 @@ double any_overlap(double small_size, std::string& name) {
 
 // How far B must move along -d, from where it is, to touch A: the entry of
 // the ray into A - B. Moving B by -s d changes the overlap along a unit n by
-// s (n . d); B touches A when the last facet of A - B with n . d > 0 stops
-// separating them: s = max of -overlap(n) / (n . d). The facet normals are
+// s (n . d). A facet with n . d > 0 stops separating them at
+// s = -overlap(n) / (n . d), one with n . d < 0 starts to at that s: B
+// touches at the largest of the first kind, if that is before the smallest
+// of the second; else the ray misses A - B (nullopt). The facet normals are
 // the face normals and the edge pairs whose Gauss arcs may cross.
-double entry_along(const Placed& a, const Placed& b, const Vec3& d) {
+std::optional<double> entry_along(const Placed& a, const Placed& b, const Vec3& d) {
   const mfz_hull view_a = a.hull.view(), view_b = b.hull.view();
   const PosedHull pa(view_a, a.pose), pb(view_b, b.pose);
-  double entry = -INFINITY;
+  double entry = -INFINITY, exit = INFINITY;
+  bool apart_sideways = false;
+  // Touching, the overlaps are 0 only to rounding.
+  const double rounding = 1e-12 * (a.hull.diameter() + b.hull.diameter());
   const auto offer = [&](const Vec3& n) {
     const double along = n.dot(d);
-    if (!(along > 1e-12)) return;
     const Interval ia = pa.project(n), ib = pb.project(n);
-    entry = std::max(entry, -(ia.max - ib.min) / along);
+    const double overlap = ia.max - ib.min;
+    if (along > 1e-12)
+      entry = std::max(entry, -overlap / along);
+    else if (along < -1e-12)
+      exit = std::min(exit, -overlap / along);
+    else
+      apart_sideways = apart_sideways || overlap < -rounding;
   };
   for (int f = 0; f < pa.face_count(); ++f) offer(pa.world_face_normal(f));
   for (int f = 0; f < pb.face_count(); ++f) offer(-pb.world_face_normal(f));
@@ -265,27 +282,35 @@ double entry_along(const Placed& a, const Placed& b, const Vec3& d) {
       offer(n.normalized());
       offer(-n.normalized());
     }
+  if (apart_sideways || !std::isfinite(entry) || entry > exit + rounding) return std::nullopt;
   return entry;
 }
 
 // Places B so that it reaches `overlap` into A along `d` (world, from A to
-// B), after a sideways offset of 0 to 0.3 of the smaller size: B is moved
-// along d until it just touches A (entry_along), then `overlap` further, so
+// B): head on, B's supporting feature on A's, then a sideways offset of 0 to
+// 0.3 of the smaller size (none, where the offset makes B miss A). B is
+// moved along d until it just touches A (entry_along), then `overlap`
+// further, so
 // that touching is touching and shallow is shallow whatever the features.
 // Placing by the supports along d alone left pointed features apart: two
 // thirds of the cases, most of the touching ones among them, never met.
 void place_along(const Placed& a, Placed& b, const Vec3& d, double overlap, double size) {
   b.pose.position = Vec3::Zero();
-  const double reach_a = support(a.world(), d);
-  const double reach_b = -support(b.world(), -d);
+  // Head on: B's supporting feature along -d on A's along d, touching.
+  const Vec3 head_on = support_centre(a.world(), d, size) - support_centre(b.world(), -d, size);
   const Vec3 side = any_perpendicular(d);
   const Vec3 other = d.cross(side);
   static const double kOffsets[] = {0, 1e-3, 1e-2, 0.1, 0.3};
   const double offset = kOffsets[pick(0, 4)] * size;
   const double along_side = digits(10), along_other = digits(10);
-  b.pose.position = (reach_a - reach_b) * d + offset * (along_side * side + along_other * other);
-  const double entry = entry_along(a, b, d);
-  if (std::isfinite(entry)) b.pose.position -= entry * d;
+  b.pose.position = head_on + offset * (along_side * side + along_other * other);
+  std::optional<double> entry = entry_along(a, b, d);
+  if (!entry) {
+    // The offset took B's line of approach past A: approach head on.
+    b.pose.position = head_on;
+    entry = entry_along(a, b, d);
+  }
+  if (entry) b.pose.position -= *entry * d;
   b.pose.position -= overlap * d;
 }
 

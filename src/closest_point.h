@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Closest points on simple shapes: shared by the exact oracle and the
-/// relations' comparison of contact sets.
+/// Closest points on simple shapes: shared by the generator's edge contacts,
+/// the exact oracle's gap and the relations' comparison of contact sets.
 #include "vec.h"
 
 namespace mfz {

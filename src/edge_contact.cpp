@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "clipping_generator.h"
+#include "closest_point.h"
 #include "tolerances.h"
 
 namespace mfz {
@@ -37,37 +38,18 @@ int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edge
       }
     }
   };
-  // F22: a diagonal between two triangles of one face is no edge (as in F4);
-  // it would add a contact that the face untriangulated does not have.
-  // Asked only of an edge that would count, since the test scans loops.
-  const auto flat = [&](int v0, int v1, int f) {
-    const int other = hull.face_across(v0, v1);
-    return other >= 0 && coplanar_normals(hull.world_face_normal(other), hull.world_face_normal(f));
-  };
+  // F22: a diagonal between two triangles of one face would add a contact
+  // that the face untriangulated does not have.
   each_edge([&](int v0, int v1, int f, double reach) {
-    if (reach > best && !flat(v0, v1, f)) best = reach;
+    if (reach > best && !hull.is_flat_edge(v0, v1, f)) best = reach;
   });
   const double slack = tol::kTie * (best - lowest) + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * std::abs(best);
   int count = 0;
   each_edge([&](int v0, int v1, int f, double reach) {
-    if (count < kMaxSupportingEdges && reach >= best - slack && !flat(v0, v1, f))
+    if (count < kMaxSupportingEdges && reach >= best - slack && !hull.is_flat_edge(v0, v1, f))
       edges[count++] = {hull.world_vertex(v0), hull.world_vertex(v1)};
   });
   return count;
-}
-
-// Closest points of two segments: Ericson, Real-Time Collision Detection, 5.1.9.
-void closest_points(const Segment& s1, const Segment& s2, Vec3& c1, Vec3& c2) {
-  const Vec3 d1 = s1.to - s1.from, d2 = s2.to - s2.from, r = s1.from - s2.from;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  const double c = d1.dot(r), b = d1.dot(d2), denom = a * e - b * b;
-  // Parallel segments (denom 0) have a line of closest pairs: take s = 0.
-  double s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-  double t = e > 0 ? (b * s + f) / e : 0.0;
-  if (t < 0) t = 0, s = a > 0 ? std::clamp(-c / a, 0.0, 1.0) : 0.0;
-  else if (t > 1) t = 1, s = a > 0 ? std::clamp((b - c) / a, 0.0, 1.0) : 0.0;
-  c1 = s1.from + s * d1;
-  c2 = s2.from + t * d2;
 }
 
 bool holds_contact(const mfz_manifold& out, int first, const Vec3& point_a) {
@@ -93,7 +75,7 @@ bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatRe
   for (int i = 0; i < count_a; ++i)
     for (int j = 0; j < count_b; ++j) {
       Vec3 point_a, point_b;
-      closest_points(edges_a[i], edges_b[j], point_a, point_b);
+      closest_between_segments(edges_a[i].from, edges_a[i].to, edges_b[j].from, edges_b[j].to, point_a, point_b);
       const double miss = (point_b - (point_a - sat.depth * sat.normal)).norm();
       // The tolerance adds the rounding of world coordinates far from the origin.
       const double reach = (edges_a[i].to - edges_a[i].from).norm() + (edges_b[j].to - edges_b[j].from).norm();

@@ -91,6 +91,15 @@ class PosedHull {
     return -1;
   }
 
+  /// True when the loop step v0 -> v1 of `face` lies between two coplanar
+  /// faces (a triangulated face's diagonal): no edge of the polyhedron, so it
+  /// spans no SAT axis (F4) and supports no edge contact (F22). Scans loops:
+  /// ask it only of an edge about to count.
+  bool is_flat_edge(int v0, int v1, int face) const {
+    const int other = face_across(v0, v1);
+    return other >= 0 && coplanar_normals(world_face_normal(other), world_face_normal(face));
+  }
+
  private:
   const mfz_hull& hull_;
   const Pose& pose_;

@@ -96,14 +96,6 @@ void for_each_edge(const PosedHull& hull, Visit&& visit) {
   }
 }
 
-// An edge between two coplanar faces (a triangulated face's diagonal) is no
-// edge of the polyhedron: its axes belong to no Minkowski face (FINDINGS F4).
-// Checked only for an axis about to win, since finding the other face scans loops.
-bool is_flat_edge(const PosedHull& hull, int v0, int v1, int face) {
-  const int other = hull.face_across(v0, v1);
-  return other >= 0 && coplanar_normals(hull.world_face_normal(other), hull.world_face_normal(face));
-}
-
 }  // namespace
 
 namespace {
@@ -135,7 +127,7 @@ void all_edge_pairs(const PosedHull& a, const PosedHull& b, SatResult& best, boo
   for_each_edge(a, [&](int ea, int a0, int a1, int face_a) {
     for_each_edge(b, [&](int eb, int b0, int b1, int face_b) {
       separated = !consider_edge_pair(a, b, ea, a0, a1, eb, b0, b1, best, fixed, [&] {
-        return is_flat_edge(a, a0, a1, face_a) || is_flat_edge(b, b0, b1, face_b);
+        return a.is_flat_edge(a0, a1, face_a) || b.is_flat_edge(b0, b1, face_b);
       });
       return !separated;
     });

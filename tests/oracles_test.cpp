@@ -190,7 +190,8 @@ TEST(LibccdOracle, SeparatedHullsDoNotIntersect) {
 
 // The two exact oracles, over every family of the property suite: the least
 // overlap over every axis (what the suite uses) and Qhull's hull of the
-// vertex differences (the contract's example) give one depth, and one side.
+// vertex differences (the contract's example) give one depth, and one side,
+// and agree on how deep B still is when moved.
 RC_GTEST_PROP(ExactOracles, LeastOverlapAndQhullsMinkowskiDifferenceAgree, ()) {
   const props::GeneratedCase c = *props::any_case();
   SceneBuild built = make_scene(c.file);
@@ -200,14 +201,22 @@ RC_GTEST_PROP(ExactOracles, LeastOverlapAndQhullsMinkowskiDifferenceAgree, ()) {
   const auto difference = MinkowskiDifference::build(s.world_a, s.world_b, error);
   RC_ASSERT(difference.has_value());
   const ExactDepth qhull = difference->at_origin();
-  const ExactDepth exact = exact_depth(s, rank_sat_axes(s));
+  const auto axes = rank_sat_axes(s);
+  const ExactDepth exact = exact_depth(s, axes);
   const double tol = s.length_tolerance(tol::kDepth);
   RC_TAG(exact.colliding ? "colliding" : "separated");
   if (std::abs(exact.signed_depth) <= tol) return;  // touching: either side
   RC_ASSERT(qhull.colliding == exact.colliding);
-  if (exact.colliding) RC_ASSERT(std::abs(qhull.signed_depth - exact.signed_depth) <= tol);
-  // Outside, Qhull's planes bound the gap from below.
-  else RC_ASSERT(qhull.signed_depth >= exact.signed_depth - tol);
+  if (!exact.colliding) {
+    // Outside, Qhull's planes bound the gap from below.
+    RC_ASSERT(qhull.signed_depth >= exact.signed_depth - tol);
+    return;
+  }
+  RC_ASSERT(std::abs(qhull.signed_depth - exact.signed_depth) <= tol);
+  // `separates` moves B: halfway out along the normal both say how deep B
+  // still is, the same depth (the facets of A - B are the same planes).
+  const Vec3 halfway = 0.5 * exact.signed_depth * exact.normal;
+  RC_ASSERT(std::abs(difference->depth_of(halfway) - depth_after_moving_b(axes, halfway)) <= tol);
 }
 
 }  // namespace
