@@ -1,12 +1,13 @@
 #include "clip_polygon.h"
 
+#include <algorithm>
 #include <limits>
 
 #include "closest_point.h"
 
 namespace mfz {
 
-bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out) {
+bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane) {
   out.clear();
   if (in.empty()) return true;
   bool ok = true;
@@ -15,8 +16,11 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out) 
   for (int k = 0; k < in.size(); ++k) {
     const Vec3& end = in[k];
     const double d_end = plane.signed_distance(end);
-    const bool start_inside = d_start <= 0, end_inside = d_end <= 0;
-    if (start_inside != end_inside) {
+    const bool start_inside = d_start <= on_plane, end_inside = d_end <= on_plane;
+    // An edge whose inside end is on the plane crosses it there: that end is
+    // kept anyway. Interpolating would divide rounding by rounding when the
+    // edge lies in the plane, and put the crossing anywhere along it (O3).
+    if (start_inside != end_inside && std::min(d_start, d_end) <= 0) {
       // The signs differ strictly (one <= 0, the other > 0), so the
       // denominator is never zero and t lies in [0, 1].
       const double t = d_start / (d_start - d_end);

@@ -125,6 +125,10 @@ bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incide
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
   const ClipPolygon& loop = *reference.polygon;
   const int n = loop.size();
+  // F23: an incident edge that lies in a side plane is on it, not across it
+  // by a rounding error at each end.
+  const double on_plane = tol::kWorldUlps * std::numeric_limits<double>::epsilon() *
+                          std::max(largest_coordinate(loop), largest_coordinate(incident));
   ClipPolygon scratch;
   for (int k = 0; k < n; ++k) {
     const Vec3& from = loop[k];
@@ -136,7 +140,7 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
     const double length = outward.norm();
     if (!(length > 0)) continue;
     const Plane side{outward / length, outward.dot(from) / length};
-    if (!clip_to_plane(incident, side, scratch)) return false;
+    if (!clip_to_plane(incident, side, scratch, on_plane)) return false;
     incident.take(scratch);
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);

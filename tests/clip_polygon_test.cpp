@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "test_support.h"
 
 namespace mfz {
@@ -36,6 +38,38 @@ TEST(SutherlandHodgman, CuttingACornerAddsOnePoint) {
   ClipPolygon out;
   clip_to_plane(unit_square(), Plane{Vec3(1, 1, 0).normalized(), 1.5 / std::sqrt(2.0)}, out);
   EXPECT_EQ(out.size(), 5);
+}
+
+// O3 / F23: the square's right edge lies in the plane x = 1, its ends a
+// rounding error either side. Without a band the pass "crosses" that edge
+// wherever rounding / rounding puts the crossing: here at the edge's middle.
+ClipPolygon square_with_right_edge_off_by_rounding() {
+  ClipPolygon square;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(std::nextafter(1.0, 2.0), 0, 0), Vec3(std::nextafter(1.0, 0.0), 1, 0), Vec3(0, 1, 0)}) square.push(p);
+  return square;
+}
+
+TEST(SutherlandHodgman, WithoutABandAnEdgeInThePlaneIsCrossedWhereRoundingSays) {
+  ClipPolygon out;
+  clip_to_plane(square_with_right_edge_off_by_rounding(), Plane{Vec3(1, 0, 0), 1.0}, out);
+  ASSERT_EQ(out.size(), 5);
+  bool crossing_mid_edge = false;
+  for (int k = 0; k < out.size(); ++k) crossing_mid_edge |= out[k].y() > 0.25 && out[k].y() < 0.75;
+  EXPECT_TRUE(crossing_mid_edge);
+}
+
+TEST(SutherlandHodgman, AnEdgeWithinTheBandOfThePlaneKeepsItsEndsAndAddsNoCrossing) {
+  ClipPolygon out;
+  clip_to_plane(square_with_right_edge_off_by_rounding(), Plane{Vec3(1, 0, 0), 1.0}, out, 1e-15);
+  ASSERT_EQ(out.size(), 4);
+  for (int k = 0; k < out.size(); ++k) EXPECT_TRUE(out[k].y() == 0 || out[k].y() == 1) << k;
+}
+
+TEST(SutherlandHodgman, ABandStillCutsAnEdgeThatReallyCrosses) {
+  ClipPolygon out;
+  clip_to_plane(unit_square(), Plane{Vec3(1, 0, 0), 0.5}, out, 1e-15);
+  ASSERT_EQ(out.size(), 4);
+  for (int k = 0; k < out.size(); ++k) EXPECT_LE(out[k].x(), 0.5);
 }
 
 TEST(PointRemoval, DropsPointsOutsideWithoutAddingCrossings) {
