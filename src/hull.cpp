@@ -52,6 +52,19 @@ std::string flatness_error(const std::vector<Vec3>& points) {
   return {};
 }
 
+// Most facets of a cloud are triangles: the sort below, without atan2. The
+// loop starts where the sort's would (at the vertex before loop[0], whose
+// angle is the only negative one), so both paths build the same hull.
+// False, and `loop` untouched, where a vertex lies on u's line (angle 0 or
+// pi): the sort then decides.
+bool order_triangle(std::vector<int>& loop, const std::vector<Vec3>& points, const Vec3& centroid, const Vec3& v) {
+  const double side_1 = (points[loop[1]] - centroid).dot(v), side_2 = (points[loop[2]] - centroid).dot(v);
+  if (side_1 == 0 || side_2 == 0 || (side_1 > 0) == (side_2 > 0)) return false;
+  const int first = loop[0], next = side_1 > 0 ? loop[1] : loop[2], before = side_1 > 0 ? loop[2] : loop[1];
+  loop = {before, first, next};
+  return true;
+}
+
 // Qhull gives each facet's vertices as an unordered set: order them
 // counter-clockwise about the outward normal by angle around their centroid
 // (a facet is convex, so the angular order is the loop).
@@ -61,6 +74,7 @@ void order_counter_clockwise(std::vector<int>& loop, const std::vector<Vec3>& po
   centroid /= static_cast<double>(loop.size());
   const Vec3 u = (points[loop[0]] - centroid).normalized();
   const Vec3 v = normal.cross(u);
+  if (loop.size() == 3 && order_triangle(loop, points, centroid, v)) return;
   std::vector<std::pair<double, int>> keyed;
   for (int id : loop) {
     const Vec3 d = points[id] - centroid;
@@ -126,6 +140,13 @@ Hull Hull::renumbered() const {
 Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,
                       std::vector<Vec3> normals) {
   Hull hull;
+  size_t steps_total = 0;
+  for (const auto& loop : loops) steps_total += loop.size();
+  hull.vertices_.reserve(vertices.size());
+  hull.face_offsets_.reserve(loops.size() + 1);
+  hull.face_vertices_.reserve(steps_total);
+  hull.face_normals_.reserve(normals.size());
+  hull.edges_.reserve(steps_total / 2);
   for (const Vec3& v : vertices) hull.vertices_.push_back(to_abi(v));
   hull.face_offsets_.push_back(0);
   for (const auto& loop : loops) {
@@ -140,6 +161,7 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
     int order, from, to, face;
   };
   std::vector<Step> steps;
+  steps.reserve(steps_total);
   const long long base = static_cast<long long>(hull.vertices_.size()) + 1;
   for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
     const auto& loop = loops[f];
@@ -151,6 +173,7 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
   std::sort(steps.begin(), steps.end(),
             [](const Step& x, const Step& y) { return x.key != y.key ? x.key < y.key : x.order < y.order; });
   std::vector<std::pair<int, HullEdge>> first_seen;
+  first_seen.reserve(steps_total / 2);
   for (size_t i = 0; i < steps.size();) {
     size_t j = i;
     while (j + 1 < steps.size() && steps[j + 1].key == steps[i].key) ++j;
@@ -171,13 +194,15 @@ HullBuild build_hull(const std::vector<Vec3>& points) {
   if (std::string why = flatness_error(points); !why.empty()) return {std::nullopt, why};
 
   std::string qhull_error;
-  const std::vector<QhullFacet> facets = qhull_facets(points, /*triangulate=*/false, qhull_error);
+  std::vector<QhullFacet> facets = qhull_facets(points, /*triangulate=*/false, qhull_error);
   if (facets.empty()) return {std::nullopt, "qhull: " + qhull_error};
 
   std::vector<std::vector<int>> loops;
   std::vector<Vec3> normals;
-  for (const QhullFacet& facet : facets) {
-    loops.push_back(facet.point_ids);
+  loops.reserve(facets.size());
+  normals.reserve(facets.size());
+  for (QhullFacet& facet : facets) {
+    loops.push_back(std::move(facet.point_ids));
     normals.push_back(facet.normal.normalized());
     order_counter_clockwise(loops.back(), points, normals.back());
   }
@@ -205,6 +230,7 @@ std::string validate_hull(const Hull& hull) {
   if (v < 4 || f < 4) return "fewer than four vertices or faces";
   if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
   std::vector<std::pair<int, int>> directed;
+  directed.reserve(2 * static_cast<size_t>(e));
   for (int face = 0; face < f; ++face) {
     if (hull.face_size(face) < 3) return "a face has fewer than three vertices";
     for (int k = 0; k < hull.face_size(face); ++k)

@@ -44,8 +44,10 @@ std::vector<QhullFacet> qhull_facets(const std::vector<Vec3>& points, bool trian
   } else {
     facetT* facet;
     vertexT *vertex, **vertexp;
+    facets.reserve(static_cast<size_t>(qh->num_facets));
     FORALLfacets {
       QhullFacet out;
+      out.point_ids.reserve(static_cast<size_t>(qh_setsize(qh, facet->vertices)));
       out.normal = Vec3(facet->normal[0], facet->normal[1], facet->normal[2]);
       // Qhull's plane is normal . x + offset = 0, with the inside negative.
       out.offset = -facet->offset;

@@ -22,15 +22,15 @@ namespace {
 // whole cost (E_A x E_B axes times V_A + V_B points), and plain arrays let
 // the compiler keep them in registers.
 struct PointColumns {
-  std::vector<double> x, y, z;
-  explicit PointColumns(const std::vector<Vec3>& points) {
-    for (const Vec3& p : points) x.push_back(p.x()), y.push_back(p.y()), z.push_back(p.z());
+  std::vector<double> xyz;  // x[0..n), y[0..n), z[0..n): one allocation
+  size_t n;
+  explicit PointColumns(const std::vector<Vec3>& points) : xyz(3 * points.size()), n(points.size()) {
+    for (size_t i = 0; i < n; ++i) xyz[i] = points[i].x(), xyz[n + i] = points[i].y(), xyz[2 * n + i] = points[i].z();
   }
   void project(const Vec3& axis, double& lowest, double& highest) const {
     double low = INFINITY, high = -INFINITY;
     const double ax = axis.x(), ay = axis.y(), az = axis.z();
-    const double *px = x.data(), *py = y.data(), *pz = z.data();
-    const size_t n = x.size();
+    const double *px = xyz.data(), *py = px + n, *pz = py + n;
     // The points are finite (hulls are validated), so min and max may run
     // in vector lanes in any order: the result is the same number.
 #pragma omp simd reduction(min : low) reduction(max : high)
@@ -46,53 +46,64 @@ struct PointColumns {
 // A face of A counts outward and a face of B inward only: those are the faces
 // of the Minkowski difference (reversed, a face normal meets an edge or a
 // vertex of its hull). Edge pairs count either way.
-void add_axis(const PointColumns& a, const PointColumns& b, const Vec3& axis, AxisKind kind, int fa, int fb,
-              std::vector<RankedAxis>& out) {
+RankedAxis ranked_axis(const PointColumns& a, const PointColumns& b, const Vec3& axis, AxisKind kind, int fa, int fb) {
   // One pass gives both directions: along = max_a - min_b, against = max_b - min_a.
   double min_a, max_a, min_b, max_b;
   a.project(axis, min_a, max_a);
   b.project(axis, min_b, max_b);
   const double along = max_a - min_b, against = max_b - min_a;
   constexpr double no_facet = INFINITY;
-  if (kind == AxisKind::face_a) return out.push_back({axis, along, no_facet, kind, fa, fb});
-  if (kind == AxisKind::face_b) return out.push_back({-axis, against, no_facet, kind, fa, fb});
-  if (along <= against)
-    out.push_back({axis, along, against, kind, fa, fb});
-  else
-    out.push_back({-axis, against, along, kind, fa, fb});
+  if (kind == AxisKind::face_a) return {axis, along, no_facet, kind, fa, fb};
+  if (kind == AxisKind::face_b) return {-axis, against, no_facet, kind, fa, fb};
+  if (along <= against) return {axis, along, against, kind, fa, fb};
+  return {-axis, against, along, kind, fa, fb};
 }
 
 // Best first, but only as far as anyone reads: the axes within `window` of
 // the least overlap (and at least three) are sorted, stably; the rest follow
-// in no order. Sorting all E_A x E_B axes cost a tenth of a case.
+// in no order. Sorting all E_A x E_B axes cost a tenth of a case, and a
+// stable partition's buffer a fiftieth.
 void rank_front(std::vector<RankedAxis>& axes, double window) {
   if (axes.empty()) return;
   double least = INFINITY;
   for (const RankedAxis& axis : axes) least = std::min(least, axis.overlap);
-  auto front_end = std::stable_partition(axes.begin(), axes.end(),
-                                         [&](const RankedAxis& axis) { return axis.overlap <= least + window; });
+  // Swapping keeps the front in its order (it only ever moves forward past
+  // axes of the rest) and scrambles only the rest.
+  size_t front = 0;
+  for (size_t k = 0; k < axes.size(); ++k)
+    if (axes[k].overlap <= least + window) std::swap(axes[front++], axes[k]);
   const auto by_overlap = [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; };
-  if (front_end - axes.begin() < 3) {
-    front_end = axes.begin() + std::min<std::ptrdiff_t>(3, axes.size());
-    std::partial_sort(axes.begin(), front_end, axes.end(), by_overlap);
+  if (front < 3) {
+    front = std::min<size_t>(3, axes.size());
+    std::partial_sort(axes.begin(), axes.begin() + front, axes.end(), by_overlap);
   }
-  std::stable_sort(axes.begin(), front_end, by_overlap);
+  if (front <= 16) {
+    // Insertion sort: stable, and no buffer for the usual handful of axes.
+    for (size_t k = 1; k < front; ++k)
+      for (size_t j = k; j > 0 && by_overlap(axes[j], axes[j - 1]); --j) std::swap(axes[j], axes[j - 1]);
+  } else {
+    std::stable_sort(axes.begin(), axes.begin() + front, by_overlap);
+  }
 }
 
 }  // namespace
 
 std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
   const PointColumns a(s.world_a), b(s.world_b);
-  std::vector<RankedAxis> axes;
-  axes.reserve(s.hull_a.face_count() + s.hull_b.face_count() + s.hull_a.edges().size() * s.hull_b.edges().size());
-  for (int f = 0; f < s.hull_a.face_count(); ++f)
-    add_axis(a, b, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1, axes);
-  for (int f = 0; f < s.hull_b.face_count(); ++f)
-    add_axis(a, b, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f, axes);
   const auto& edges_a = s.hull_a.edges();
   const auto& edges_b = s.hull_b.edges();
+  // Sized for every candidate and trimmed after: writing by index keeps the
+  // loop free of push_back's growth path.
+  std::vector<RankedAxis> axes(s.hull_a.face_count() + s.hull_b.face_count() + edges_a.size() * edges_b.size());
+  size_t count = 0;
+  for (int f = 0; f < s.hull_a.face_count(); ++f)
+    axes[count++] = ranked_axis(a, b, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1);
+  for (int f = 0; f < s.hull_b.face_count(); ++f)
+    axes[count++] = ranked_axis(a, b, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f);
   std::vector<Vec3> vectors_b;
   std::vector<double> lengths_b;
+  vectors_b.reserve(edges_b.size());
+  lengths_b.reserve(edges_b.size());
   for (const HullEdge& e : edges_b) {
     vectors_b.push_back(s.world_b[e.v1] - s.world_b[e.v0]);
     lengths_b.push_back(vectors_b.back().norm());
@@ -104,9 +115,10 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
       const Vec3 axis = ea.cross(vectors_b[j]);
       const double length = axis.norm();
       if (length <= tol::kParallelEdges * length_a * lengths_b[j]) continue;
-      add_axis(a, b, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j), axes);
+      axes[count++] = ranked_axis(a, b, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j));
     }
   }
+  axes.resize(count);
   rank_front(axes, s.length_tolerance(kRankedWindow));
   return axes;
 }
