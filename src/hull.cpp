@@ -229,19 +229,28 @@ std::string validate_hull(const Hull& hull) {
   const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
   if (v < 4 || f < 4) return "fewer than four vertices or faces";
   if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
-  std::vector<std::pair<int, int>> directed;
-  directed.reserve(2 * static_cast<size_t>(e));
+  // Every loop step from -> to once, and its reverse once: the sorted steps
+  // equal the sorted reversed steps, with no step repeated.
+  std::vector<long long> steps, reversed;
+  steps.reserve(2 * static_cast<size_t>(e));
+  reversed.reserve(2 * static_cast<size_t>(e));
   for (int face = 0; face < f; ++face) {
-    if (hull.face_size(face) < 3) return "a face has fewer than three vertices";
-    for (int k = 0; k < hull.face_size(face); ++k)
-      directed.push_back({hull.face_vertex(face, k), hull.face_vertex(face, (k + 1) % hull.face_size(face))});
+    const int n = hull.face_size(face);
+    if (n < 3) return "a face has fewer than three vertices";
+    for (int k = 0; k < n; ++k) {
+      const long long from = hull.face_vertex(face, k), to = hull.face_vertex(face, (k + 1) % n);
+      steps.push_back(from * v + to);
+      reversed.push_back(to * v + from);
+    }
   }
-  std::sort(directed.begin(), directed.end());
-  for (size_t i = 0; i < directed.size(); ++i) {
-    const auto [from, to] = directed[i];
-    const bool repeated = i + 1 < directed.size() && directed[i + 1] == directed[i];
-    if (repeated || !std::binary_search(directed.begin(), directed.end(), std::make_pair(to, from)))
-      return "edge " + std::to_string(from) + "-" + std::to_string(to) + " is not shared by exactly two faces";
+  std::sort(steps.begin(), steps.end());
+  std::sort(reversed.begin(), reversed.end());
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const bool repeated = i + 1 < steps.size() && steps[i + 1] == steps[i];
+    if (repeated || steps[i] != reversed[i]) {
+      const long long odd = repeated || steps[i] < reversed[i] ? steps[i] : reversed[i];
+      return "edge " + std::to_string(odd / v) + "-" + std::to_string(odd % v) + " is not shared by exactly two faces";
+    }
   }
   const double slack = tol::kHullConvexity * hull.diameter();
   for (int face = 0; face < f; ++face) {

@@ -177,7 +177,8 @@ TEST(HullValidation, RejectsAFlippedFaceLoop) {
   std::swap(loops[0][1], loops[0][2]);
   std::vector<Vec3> vertices;
   for (int i = 0; i < good.vertex_count(); ++i) vertices.push_back(good.vertex(i));
-  EXPECT_NE(validate_hull(Hull::from_faces(vertices, loops, normals)), "");
+  const std::string why = validate_hull(Hull::from_faces(vertices, loops, normals));
+  EXPECT_NE(why.find("is not shared by exactly two faces"), std::string::npos) << why;
 }
 
 TEST(HullValidation, RejectsANonConvexVertex) {
