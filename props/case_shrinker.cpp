@@ -55,12 +55,10 @@ bool round_number(CaseFile& c, double& number, const StillFails& still_fails, in
   return false;
 }
 
-bool round_points(CaseFile& c, std::vector<Vec3> CaseFile::*hull, const StillFails& still_fails,
+void round_points(CaseFile& c, std::vector<Vec3> CaseFile::*hull, const StillFails& still_fails,
                   const Budget& budget, int& steps) {
-  bool changed = false;
   for (size_t i = 0; i < (c.*hull).size() && budget.left(); ++i)
-    for (int axis = 0; axis < 3; ++axis) changed |= round_number(c, (c.*hull)[i](axis), still_fails, steps);
-  return changed;
+    for (int axis = 0; axis < 3; ++axis) round_number(c, (c.*hull)[i](axis), still_fails, steps);
 }
 
 // A pose's position and quaternion: make_scene normalises the quaternion,

@@ -278,9 +278,10 @@ std::optional<double> entry_along(const Placed& a, const Placed& b, const Vec3& 
       const Vec3 ea = pa.world_vertex(arcs_a[i].v1) - pa.world_vertex(arcs_a[i].v0);
       const Vec3 eb = pb.world_vertex(arcs_b[j].v1) - pb.world_vertex(arcs_b[j].v0);
       const Vec3 n = ea.cross(eb);
-      if (n.norm() <= 1e-12 * ea.norm() * eb.norm()) continue;
-      offer(n.normalized());
-      offer(-n.normalized());
+      const double length = n.norm();
+      if (length <= 1e-12 * ea.norm() * eb.norm()) continue;
+      offer(n / length);
+      offer(-n / length);
     }
   if (apart_sideways || !std::isfinite(entry) || entry > exit + rounding) return std::nullopt;
   return entry;

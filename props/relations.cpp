@@ -144,7 +144,7 @@ Hull triangulated(const Hull& h) {
 // coordinates, so it turns by the world frame's resolution over the shorter
 // edge: a 1e-4 edge 1e6 from the origin points only to within 1e-4 rad.
 Tolerances tolerances_for(const Scene& s, double extra_extent = 0) {
-  const double ulps = tol::kWorldUlps * std::numeric_limits<double>::epsilon() * (s.world_extent + extra_extent);
+  const double ulps = tol::world_rounding(s.world_extent + extra_extent);
   return {tol::kDepth * s.scale + ulps, kRelationPoint * s.scale + ulps, kRelationNormal + ulps / s.shortest_edge};
 }
 

@@ -19,7 +19,7 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
     const bool start_inside = d_start <= on_plane, end_inside = d_end <= on_plane;
     // An edge whose inside end is on the plane crosses it there: that end is
     // kept anyway. Interpolating would divide rounding by rounding when the
-    // edge lies in the plane, and put the crossing anywhere along it (O3).
+    // edge lies in the plane, and put the crossing anywhere along it (F23).
     if (start_inside != end_inside && std::min(d_start, d_end) <= 0) {
       // The signs differ strictly (one <= 0, the other > 0), so the
       // denominator is never zero and t lies in [0, 1].

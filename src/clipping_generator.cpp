@@ -19,8 +19,7 @@ constexpr int kMaxTiedFaces = 64;
 double furthest_slack(const PosedHull& hull, const Vec3& direction, double furthest) {
   double nearest = furthest;
   for (int i = 0; i < hull.vertex_count(); ++i) nearest = std::min(nearest, direction.dot(hull.world_vertex(i)));
-  return tol::kTie * (furthest - nearest) +
-         tol::kWorldUlps * std::numeric_limits<double>::epsilon() * std::abs(furthest);
+  return tol::kTie * (furthest - nearest) + tol::world_rounding(std::abs(furthest));
 }
 
 // Faces that hold the support vertex, or with over_ties any vertex as far.
@@ -44,8 +43,7 @@ void faces_at_support(const PosedHull& hull, const Vec3& direction, int support,
 // 1e-12 was 4500 ulps, and 1e6 L from the origin it merged the corners of a
 // slab 1e-6 thick (FINDINGS F19).
 bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution) {
-  const double same = tol::kWorldUlps * std::numeric_limits<double>::epsilon() *
-                      std::max(resolution, p.cwiseAbs().maxCoeff());
+  const double same = tol::world_rounding(std::max(resolution, p.cwiseAbs().maxCoeff()));
   for (int k = 0; k < points.size(); ++k)
     if ((points[k] - p).norm() <= same) return true;
   return false;
@@ -127,8 +125,7 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
   const int n = loop.size();
   // F23: an incident edge that lies in a side plane is on it, not across it
   // by a rounding error at each end.
-  const double on_plane = tol::kWorldUlps * std::numeric_limits<double>::epsilon() *
-                          std::max(largest_coordinate(loop), largest_coordinate(incident));
+  const double on_plane = tol::world_rounding(std::max(largest_coordinate(loop), largest_coordinate(incident)));
   ClipPolygon scratch;
   for (int k = 0; k < n; ++k) {
     const Vec3& from = loop[k];

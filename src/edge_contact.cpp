@@ -43,7 +43,7 @@ int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edge
   each_edge([&](int v0, int v1, int f, double reach) {
     if (reach > best && !hull.is_flat_edge(v0, v1, f)) best = reach;
   });
-  const double slack = tol::kTie * (best - lowest) + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * std::abs(best);
+  const double slack = tol::kTie * (best - lowest) + tol::world_rounding(std::abs(best));
   int count = 0;
   each_edge([&](int v0, int v1, int f, double reach) {
     if (count < kMaxSupportingEdges && reach >= best - slack && !hull.is_flat_edge(v0, v1, f))
@@ -80,7 +80,7 @@ bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatRe
       // The tolerance adds the rounding of world coordinates far from the origin.
       const double reach = (edges_a[i].to - edges_a[i].from).norm() + (edges_b[j].to - edges_b[j].from).norm();
       const double extent = edges_a[i].from.cwiseAbs().maxCoeff() + edges_b[j].from.cwiseAbs().maxCoeff();
-      const double slack = tol::kEdgesCross * reach + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
+      const double slack = tol::kEdgesCross * reach + tol::world_rounding(extent);
       // Only edges whose shadows along n cross make an edge contact; otherwise
       // the axis came from a near-tie with a face axis: clip faces instead.
       if (!(miss <= slack)) continue;

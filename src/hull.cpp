@@ -228,7 +228,6 @@ HullBuild build_hull(const std::vector<Vec3>& points) {
 std::string validate_hull(const Hull& hull) {
   const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
   if (v < 4 || f < 4) return "fewer than four vertices or faces";
-  if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
   // Every loop step from -> to once, and its reverse once: the sorted steps
   // equal the sorted reversed steps, with no step repeated.
   std::vector<long long> steps, reversed;
@@ -252,6 +251,8 @@ std::string validate_hull(const Hull& hull) {
       return "edge " + std::to_string(odd / v) + "-" + std::to_string(odd % v) + " is not shared by exactly two faces";
     }
   }
+  // Every edge in two faces, checked first: an open surface is named as one.
+  if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
   const double slack = tol::kHullConvexity * hull.diameter();
   for (int face = 0; face < f; ++face) {
     const Vec3 n = hull.face_normal(face);

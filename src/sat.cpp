@@ -65,7 +65,7 @@ bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind
   // edge pair along a face normal can come out smaller by rounding alone.
   const double world = std::max({std::abs(ia.min), std::abs(ia.max), std::abs(ib.min), std::abs(ib.max)});
   const double slack = tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) +
-                       tol::kWorldUlps * std::numeric_limits<double>::epsilon() * world;
+                       tol::world_rounding(world);
   const bool edge_after_face = fixed && kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
   const Vec3 normal = b_along_axis ? axis : Vec3(-axis);
   const SatResult candidate{false, normal, overlap, kind, fa, fb};

@@ -9,7 +9,7 @@
 namespace mfz {
 
 double Scene::length_tolerance(double k) const {
-  return k * scale + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * world_extent;
+  return k * scale + tol::world_rounding(world_extent);
 }
 
 namespace {

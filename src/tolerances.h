@@ -12,12 +12,19 @@
 /// absolute world coordinate of the case. For cases near the origin M <= L and
 /// the second term is below 1e-13 L, so the tolerance is the contract's k * L.
 
+#include <limits>
+
 namespace mfz::tol {
 
 /// Resolution of the world frame, in ulps of the largest coordinate: a rigid
 /// motion (a rotation of 9 products, a translation) and a dot product over
 /// world points each lose a few ulps; 64 covers the chain with room.
 inline constexpr double kWorldUlps = 64.0;
+/// The world frame's resolution at coordinates of size `magnitude`:
+/// kWorldUlps ulps of it.
+inline constexpr double world_rounding(double magnitude) {
+  return kWorldUlps * std::numeric_limits<double>::epsilon() * magnitude;
+}
 
 /// |depth| or gap below this (x L) is "touching": either colliding answer passes.
 inline constexpr double kTouching = 1e-9;

@@ -181,6 +181,23 @@ TEST(HullValidation, RejectsAFlippedFaceLoop) {
   EXPECT_NE(why.find("is not shared by exactly two faces"), std::string::npos) << why;
 }
 
+TEST(HullValidation, RejectsAnOpenHullByItsUnsharedEdges) {
+  // A box with its last face left out: no step repeats, but the rim's steps
+  // have no reverse.
+  const Hull good = *build_hull(box_points(1, 1, 1)).hull;
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (int f = 0; f + 1 < good.face_count(); ++f) {
+    loops.emplace_back();
+    for (int k = 0; k < good.face_size(f); ++k) loops.back().push_back(good.face_vertex(f, k));
+    normals.push_back(good.face_normal(f));
+  }
+  std::vector<Vec3> vertices;
+  for (int i = 0; i < good.vertex_count(); ++i) vertices.push_back(good.vertex(i));
+  const std::string why = validate_hull(Hull::from_faces(vertices, loops, normals));
+  EXPECT_NE(why.find("is not shared by exactly two faces"), std::string::npos) << why;
+}
+
 TEST(HullValidation, RejectsANonConvexVertex) {
   const Hull good = *build_hull(box_points(1, 1, 1)).hull;
   std::vector<Vec3> vertices;

@@ -30,11 +30,10 @@ struct Nearest {
 // face, not only those whose plane the point lies outside of: at a touching
 // case rounding puts a vertex a hair inside the face it touches, and that
 // pair is the nearest. Each pair is a point of A and a point of B, so extra
-// pairs can never undercut the gap.
-template <class Offer>
-void points_against_faces(const std::vector<Vec3>& points, const Hull& hull, const Pose& pose,
-                          const std::vector<Vec3>& world, const Nearest& nearest, double rounding,
-                          Offer&& offer) {
+// pairs can never undercut the gap. `points_on_a` says which hull the points
+// belong to.
+void points_against_faces(const std::vector<Vec3>& points, bool points_on_a, const Hull& hull, const Pose& pose,
+                          const std::vector<Vec3>& world, double rounding, Nearest& nearest) {
   Vec3 loop[kMaxPolygonVertices];
   for (int f = 0; f < hull.face_count(); ++f) {
     const Vec3 normal = pose.rotate(hull.face_normal(f));
@@ -44,8 +43,14 @@ void points_against_faces(const std::vector<Vec3>& points, const Hull& hull, con
     centre /= n;
     double radius = 0;
     for (int k = 0; k < n; ++k) radius = std::max(radius, (loop[k] - centre).norm());
-    for (const Vec3& p : points)
-      if (!nearest.cannot_beat(p, centre, radius, rounding)) offer(p, closest_point_on_polygon(p, loop, n, normal));
+    for (const Vec3& p : points) {
+      if (nearest.cannot_beat(p, centre, radius, rounding)) continue;
+      const Vec3 on_face = closest_point_on_polygon(p, loop, n, normal);
+      if (points_on_a)
+        nearest.offer(p, on_face);
+      else
+        nearest.offer(on_face, p);
+    }
   }
 }
 
@@ -68,10 +73,8 @@ HullGap hull_gap(const Scene& s) {
   // The bounds are computed in world coordinates: allow their rounding.
   const double rounding = s.length_tolerance(0);
   Nearest nearest;
-  points_against_faces(s.world_a, s.hull_b, s.pose_b, s.world_b, nearest, rounding,
-                       [&](const Vec3& on_a, const Vec3& on_b) { nearest.offer(on_a, on_b); });
-  points_against_faces(s.world_b, s.hull_a, s.pose_a, s.world_a, nearest, rounding,
-                       [&](const Vec3& on_b, const Vec3& on_a) { nearest.offer(on_a, on_b); });
+  points_against_faces(s.world_a, /*points_on_a=*/true, s.hull_b, s.pose_b, s.world_b, rounding, nearest);
+  points_against_faces(s.world_b, /*points_on_a=*/false, s.hull_a, s.pose_a, s.world_a, rounding, nearest);
   const std::vector<Segment> edges_b = segments_of(s.hull_b, s.world_b);
   for (const Segment& ea : segments_of(s.hull_a, s.world_a))
     for (const Segment& eb : edges_b) {

@@ -1,9 +1,9 @@
 #include "oracles/minkowski_difference.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include <algorithm>
 #include "qhull_facets.h"
 
 namespace mfz {
