@@ -3,7 +3,7 @@
 #include <random>
 #include <vector>
 
-#include "vec.h"
+#include "geometry/vec.h"
 
 namespace mfz::bench {
 

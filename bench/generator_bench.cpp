@@ -6,9 +6,9 @@
 
 #include "bench_cases.h"
 
-#include "builtin_generator.h"
+#include "generator/builtin_generator.h"
 #include "families.h"
-#include "scene.h"
+#include "case/scene.h"
 
 namespace mfz {
 namespace {

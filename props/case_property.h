@@ -7,9 +7,9 @@
 #include <set>
 #include <string>
 
-#include "case_file.h"
-#include "generator_session.h"
-#include "invariants.h"
+#include "case/case_file.h"
+#include "harness/generator_session.h"
+#include "harness/invariants.h"
 
 namespace mfz::props {
 

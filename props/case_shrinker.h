@@ -8,7 +8,7 @@
 /// What a person reads in the case file is what is left.
 #include <functional>
 
-#include "case_file.h"
+#include "case/case_file.h"
 
 namespace mfz::props {
 

@@ -3,9 +3,9 @@
 #include <cmath>
 #include <optional>
 
-#include "edge_arcs.h"
-#include "hull.h"
-#include "posed_hull.h"
+#include "generator/edge_arcs.h"
+#include "geometry/hull.h"
+#include "geometry/posed_hull.h"
 
 namespace mfz::props {
 namespace {

@@ -9,7 +9,7 @@
 #include <ostream>
 #include <string>
 
-#include "case_file.h"
+#include "case/case_file.h"
 
 namespace mfz::props {
 

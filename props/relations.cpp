@@ -4,8 +4,8 @@
 #include <cstring>
 #include <limits>
 
-#include "closest_point.h"
-#include "tolerances.h"
+#include "geometry/closest_point.h"
+#include "geometry/tolerances.h"
 
 namespace mfz::props {
 namespace {

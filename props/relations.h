@@ -2,7 +2,7 @@
 /// \file
 /// Metamorphic relations: run the generator on a transformed case and compare
 /// with the original manifold. Depth is always compared; the normal and the
-/// contacts only where the minimal axis is unique (no tie), as CONTRACT.md
+/// contacts only where the minimal axis is unique (no tie), as docs/contract.md
 /// says. Contacts are compared as point sets, ignoring contacts within
 /// tolerance of zero depth (they come and go with rounding); when both
 /// manifolds hold four or more contacts their sets are not compared, because

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case_shrinker.h"
-#include "hull.h"
+#include "geometry/hull.h"
 #include "test_support.h"
 
 namespace mfz::props {

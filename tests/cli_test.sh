@@ -60,7 +60,7 @@ expect 0 'manifuzz check: 50 cases' -- "$manifuzz" check --cases 50 --seed 3 --o
 expect 2 'not a manifuzz generator' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_missing_symbol.so" --cases 5
 expect 2 '--cases takes' -- "$manifuzz" check --cases -3
 expect 2 '--only takes an invariant or relation name' -- "$manifuzz" check --only on-surfce --cases 5
-expect 1 'VIOLATION on-surface ' -- "$manifuzz" check --only on-surface --generator "$plugin_dir/libmanifuzz_seed.so" --cases 300 --seed 1 --out "$scratch/only" --quiet
+expect 1 'VIOLATION on-surface ' -- "$manifuzz" check --only on-surface --generator "$plugin_dir/libmanifuzz_tutorial.so" --cases 300 --seed 1 --out "$scratch/only" --quiet
 expect_one_line_error 'line 5' -- "$manifuzz" replay "$scratch/short_line.case"
 expect_one_line_error 'fewer than four' -- "$manifuzz" explain "$scratch/three_points.case"
 expect_one_line_error 'cannot load generator' -- "$manifuzz" replay --generator "$scratch/text.so" "$good"

@@ -1,4 +1,4 @@
-#include "clip_polygon.h"
+#include "generator/clip_polygon.h"
 
 #include <gtest/gtest.h>
 

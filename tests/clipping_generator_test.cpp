@@ -1,5 +1,5 @@
 // Hand-computed manifolds of the built-in generator, exact to 1e-12.
-#include "clipping_generator.h"
+#include "generator/clipping_generator.h"
 
 #include <gtest/gtest.h>
 
@@ -130,9 +130,9 @@ TEST(ClippingGenerator, ExactlyTouchingBoxesHaveZeroDepthAndNoContacts) {
   const CaseRun run = run_builtin(make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
                                             {Vec3(0.25, 0, 1), Quat::Identity()}));
   EXPECT_TRUE(run.oracles.touching);
-  EXPECT_EQ(run.manifold.colliding, 1) << "no axis separates strictly: the seed reports a collision";
+  EXPECT_EQ(run.manifold.colliding, 1) << "no axis separates strictly: the tutorial reports a collision";
   EXPECT_EQ(run.manifold.penetration, 0.0);
-  EXPECT_EQ(run.manifold.contact_count, 0) << "the seed makes no contacts unless p < 0";
+  EXPECT_EQ(run.manifold.contact_count, 0) << "the tutorial makes no contacts unless p < 0";
   expect_all_invariants_hold(run);
 }
 

@@ -4,12 +4,12 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "edge_arcs.h"
+#include "generator/edge_arcs.h"
 #include "families.h"
-#include "hull.h"
-#include "sat.h"
+#include "geometry/hull.h"
+#include "generator/sat.h"
 #include "test_support.h"
-#include "tolerances.h"
+#include "geometry/tolerances.h"
 
 #include <limits>
 

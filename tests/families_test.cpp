@@ -6,8 +6,8 @@
 #include <rapidcheck/gtest.h>
 
 #include "families.h"
-#include "invariants.h"
-#include "tolerances.h"
+#include "harness/invariants.h"
+#include "geometry/tolerances.h"
 
 namespace mfz::props {
 namespace {

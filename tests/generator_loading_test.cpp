@@ -1,4 +1,4 @@
-#include "generator.h"
+#include "harness/generator.h"
 
 #include <gtest/gtest.h>
 

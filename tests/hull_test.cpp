@@ -1,4 +1,4 @@
-#include "hull.h"
+#include "geometry/hull.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Every invariant is shown to fire on a purpose-built wrong manifold, and to
 // stay quiet on the right one. Each wrong manifold starts from the correct
 // answer for a box resting on a slab and breaks one thing.
-#include "invariants.h"
+#include "harness/invariants.h"
 
 #include <gtest/gtest.h>
 
@@ -86,7 +86,7 @@ TEST_F(InvariantFires, NegativePenetrationOnAContactWithZeroPenetration) {
 
 TEST_F(InvariantFires, PairConsistencyOnSwappedPoints) {
   mfz_manifold m = good();
-  std::swap(m.contacts[0].point_on_a, m.contacts[0].point_on_b);  // the seed's swapped branch
+  std::swap(m.contacts[0].point_on_a, m.contacts[0].point_on_b);  // the tutorial's swapped branch
   expect_fires("pair-consistency", m);
 }
 

@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <new>
 
-#include "builtin_generator.h"
+#include "generator/builtin_generator.h"
 #include "families.h"
-#include "scene.h"
+#include "case/scene.h"
 
 namespace {
 std::atomic<long> allocations{0};

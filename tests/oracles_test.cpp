@@ -5,9 +5,9 @@
 
 #include "oracles/brute_force_sat.h"
 #include "oracles/exact_depth.h"
-#include "tolerances.h"
+#include "geometry/tolerances.h"
 #include "oracles/libccd_oracle.h"
-#include "closest_point.h"
+#include "geometry/closest_point.h"
 #include "oracles/hull_gap.h"
 #include "oracles/minkowski_difference.h"
 #include "families.h"

@@ -1,6 +1,6 @@
 // Every case in corpus/regressions is a minimised finding: the built-in
 // generator must pass the whole property on it (invariants and relations), and
-// the seed's unfixed method must answer as the case's `expect-seed` line says
+// the tutorial's unfixed method must answer as the case's `expect-tutorial` line says
 // (the finding it shows, or `pass` for a bug a later fix introduced), so each
 // case still pins what it was kept for. Regression cases are never deleted.
 #include <gtest/gtest.h>
@@ -23,13 +23,13 @@ std::vector<std::string> regression_cases() {
 
 class RegressionCase : public ::testing::TestWithParam<std::string> {};
 
-std::string expected_seed_outcome(const CaseFile& c) {
+std::string expected_tutorial_outcome(const CaseFile& c) {
   for (const std::string& line : c.extensions)
-    if (line.rfind("expect-seed ", 0) == 0) return line.substr(12);
+    if (const std::string key = "expect-tutorial "; line.rfind(key, 0) == 0) return line.substr(key.size());
   return {};
 }
 
-TEST_P(RegressionCase, BuiltinPassesAndTheSeedAnswersAsRecorded) {
+TEST_P(RegressionCase, BuiltinPassesAndTheTutorialMethodAnswersAsRecorded) {
   const CaseParse parsed = read_case_file(GetParam());
   ASSERT_TRUE(parsed.value) << parsed.error;
   const auto builtin = in_process_session(Generator::builtin());
@@ -37,12 +37,12 @@ TEST_P(RegressionCase, BuiltinPassesAndTheSeedAnswersAsRecorded) {
   ASSERT_FALSE(fixed.invalid) << fixed.invalid_reason;
   EXPECT_FALSE(fixed.finding) << fixed.finding->name << ": " << fixed.finding->detail;
   std::string error;
-  const auto seed = Generator::open(std::string(MANIFUZZ_PLUGIN_DIR) + "/libmanifuzz_seed.so", error);
-  ASSERT_TRUE(seed) << error;
-  const auto seed_session = in_process_session(*seed);
-  const props::CaseOutcome unfixed = props::check_case(*parsed.value, *seed_session);
-  const std::string expected = expected_seed_outcome(*parsed.value);
-  ASSERT_FALSE(expected.empty()) << "the case has no 'expect-seed' line";
+  const auto tutorial = Generator::open(std::string(MANIFUZZ_PLUGIN_DIR) + "/libmanifuzz_tutorial.so", error);
+  ASSERT_TRUE(tutorial) << error;
+  const auto tutorial_session = in_process_session(*tutorial);
+  const props::CaseOutcome unfixed = props::check_case(*parsed.value, *tutorial_session);
+  const std::string expected = expected_tutorial_outcome(*parsed.value);
+  ASSERT_FALSE(expected.empty()) << "the case has no 'expect-tutorial' line";
   EXPECT_EQ(unfixed.finding ? unfixed.finding->name : "pass", expected);
 }
 

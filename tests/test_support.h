@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "case_file.h"
-#include "case_run.h"
+#include "case/case_file.h"
+#include "harness/case_run.h"
 
 namespace mfz::test {
 

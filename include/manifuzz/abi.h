@@ -1,5 +1,5 @@
 /// \file
-/// The generator plugin ABI, version 1 (CONTRACT.md, "The generator plugin ABI").
+/// The generator plugin ABI, version 1 (docs/contract.md, "The generator plugin ABI").
 /// Plain C so that a generator written in any language can be loaded with dlopen.
 /// Every length is in the caller's units; every pose maps local to world as
 /// `world = R(orientation) * local + position`.

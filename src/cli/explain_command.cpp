@@ -3,11 +3,11 @@
 #include <iostream>
 #include <sstream>
 
-#include "case_run.h"
+#include "harness/case_run.h"
 #include "oracles/minkowski_difference.h"
 #include "cli/arguments.h"
-#include "clipping_generator.h"
-#include "report.h"
+#include "generator/clipping_generator.h"
+#include "harness/report.h"
 
 namespace mfz::cli {
 namespace {

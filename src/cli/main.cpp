@@ -1,4 +1,4 @@
-// manifuzz: the command line (CONTRACT.md, "Command line").
+// manifuzz: the command line (docs/contract.md, "Command line").
 #include <iostream>
 #include <string>
 #include <vector>

@@ -2,9 +2,9 @@
 #include <cstdio>
 #include <iostream>
 
-#include "case_run.h"
+#include "harness/case_run.h"
 #include "cli/arguments.h"
-#include "report.h"
+#include "harness/report.h"
 
 namespace mfz::cli {
 namespace {

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <limits>
 
-#include "posed_hull.h"
-#include "tolerances.h"
+#include "geometry/posed_hull.h"
+#include "geometry/tolerances.h"
 
 namespace mfz {
 
@@ -134,7 +134,7 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t) 
 
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   if (ranked.empty()) return false;
-  // CONTRACT.md's ties: two candidates within `tie` that can lead to other
+  // docs/contract.md's ties: two candidates within `tie` that can lead to other
   // manifolds: axes pointing other ways (a face axis and a slightly tilted
   // edge axis among them: a polygon or one point), and two faces of one hull
   // (two reference polygons). Candidates along one direction are one face of

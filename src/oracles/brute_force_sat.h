@@ -17,8 +17,8 @@
 /// (minkowski_difference.h) gives the same number; a property checks that.
 #include <vector>
 
-#include "scene.h"
-#include "sat.h"
+#include "case/scene.h"
+#include "geometry/axis_kind.h"
 
 namespace mfz {
 
@@ -52,7 +52,7 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t);
 /// True when another candidate has an overlap within `tie` of the minimum and
 /// could lead to another manifold: another kind of axis, another face, or
 /// another direction, the reverse of an edge pair's axis included
-/// (CONTRACT.md, "Ties").
+/// (docs/contract.md, "Ties").
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie);
 
 }  // namespace mfz

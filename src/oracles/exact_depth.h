@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "oracles/brute_force_sat.h"
-#include "scene.h"
+#include "case/scene.h"
 
 namespace mfz {
 

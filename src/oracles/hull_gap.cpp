@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "clip_polygon.h"
-#include "closest_point.h"
+#include "geometry/closest_point.h"
 
 namespace mfz {
 namespace {
@@ -34,10 +33,10 @@ struct Nearest {
 // belong to.
 void points_against_faces(const std::vector<Vec3>& points, bool points_on_a, const Hull& hull, const Pose& pose,
                           const std::vector<Vec3>& world, double rounding, Nearest& nearest) {
-  Vec3 loop[kMaxPolygonVertices];
+  Vec3 loop[kMaxLoopOnStack];
   for (int f = 0; f < hull.face_count(); ++f) {
     const Vec3 normal = pose.rotate(hull.face_normal(f));
-    const int n = std::min(hull.face_size(f), kMaxPolygonVertices);
+    const int n = std::min(hull.face_size(f), kMaxLoopOnStack);
     Vec3 centre = Vec3::Zero();
     for (int k = 0; k < n; ++k) loop[k] = world[hull.face_vertex(f, k)], centre += loop[k];
     centre /= n;

@@ -5,7 +5,7 @@
 /// each edge against each edge. For convex polyhedra the nearest pair of
 /// points is one of those, so the minimum is the gap, to rounding of the
 /// world coordinates alone. Independent of Qhull and of any axis test.
-#include "scene.h"
+#include "case/scene.h"
 
 namespace mfz {
 

@@ -4,7 +4,7 @@
 
 #include <limits>
 
-#include "tolerances.h"
+#include "geometry/tolerances.h"
 
 namespace mfz {
 namespace {

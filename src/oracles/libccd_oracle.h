@@ -1,11 +1,11 @@
 #pragma once
 /// \file
-/// libccd (GJK, EPA, MPR) as a second opinion. Per CONTRACT.md it is called on
+/// libccd (GJK, EPA, MPR) as a second opinion. Per docs/contract.md it is called on
 /// the case rescaled to L = 1 (its tolerances are absolute) and with bounded
 /// iterations; its EPA depth is a lower bound, not the truth.
 #include <vector>
 
-#include "scene.h"
+#include "case/scene.h"
 
 namespace mfz {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "qhull_facets.h"
+#include "geometry/qhull_facets.h"
 
 namespace mfz {
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "oracles/exact_depth.h"
-#include "vec.h"
+#include "geometry/vec.h"
 
 namespace mfz {
 

@@ -1,6 +1,6 @@
 // Bug: SAT tests face normals only, never edge-edge axes.
 #include "mutant_plugin.h"
-#include "sat.h"
+#include "generator/sat.h"
 
 namespace {
 mfz::SatResult faces_only(const mfz::PosedHull& a, const mfz::PosedHull& b) {

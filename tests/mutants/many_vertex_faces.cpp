@@ -1,6 +1,6 @@
 // Bug only on faces with many vertices: the side planes go into a fixed array
 // of 8, and a reference face with more edges is clipped by its first 8 only.
-#include "clip_polygon.h"
+#include "generator/clip_polygon.h"
 #include "mutant_plugin.h"
 
 const char* const mutant::name = "mutant-many-vertex-faces";

@@ -4,7 +4,7 @@
 // (MUTANT_AFTER). Each mutant file defines a name and one of the two.
 #include <cmath>
 
-#include "clipping_generator.h"
+#include "generator/clipping_generator.h"
 
 namespace mutant {
 /// The steps the mutant runs.

@@ -1,4 +1,4 @@
-// Bug: the seed's own slip: in the flipped branch point_on_a and point_on_b
+// Bug: the tutorial's own slip: in the flipped branch point_on_a and point_on_b
 // are stored the other way round.
 #include "mutant_plugin.h"
 

@@ -2,7 +2,7 @@
 // harness must report `crash` with a shrunk case, and survive.
 #include <csignal>
 
-#include "builtin_generator.h"
+#include "generator/builtin_generator.h"
 
 extern "C" {
 int32_t mfz_abi_version(void) { return MFZ_ABI_VERSION; }

@@ -1,6 +1,6 @@
 // A generator that never returns on a vertex contact: the harness must report
 // `hang` after its per-call time limit, and go on.
-#include "builtin_generator.h"
+#include "generator/builtin_generator.h"
 
 extern "C" {
 int32_t mfz_abi_version(void) { return MFZ_ABI_VERSION; }

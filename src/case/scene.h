@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// A case made ready to check: both hulls built, poses normalised, the scale
+/// L and the world-frame resolution M that every tolerance is relative to.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case/case_file.h"
+#include "geometry/hull.h"
+
+namespace mfz {
+
+struct Scene {
+  Hull hull_a, hull_b;
+  Pose pose_a, pose_b;  ///< orientations unit length
+  double scale = 1;     ///< L: the larger hull diameter
+  double world_extent = 0;  ///< M: the largest absolute world coordinate of a vertex
+  double shortest_edge = 0;  ///< of either hull: directions taken from edges resolve to eps M / this
+  std::vector<Vec3> world_a, world_b;  ///< posed vertices
+
+  /// A length tolerance: k * L plus the world frame's resolution (tolerances.h).
+  double length_tolerance(double k) const;
+  mfz_pose abi_pose_a() const { return pose_a.to_abi(); }
+  mfz_pose abi_pose_b() const { return pose_b.to_abi(); }
+};
+
+struct SceneBuild {
+  std::optional<Scene> scene;
+  std::string error;  ///< one line, naming the hull at fault
+};
+
+SceneBuild make_scene(const CaseFile& c);
+
+}  // namespace mfz

@@ -1,0 +1,57 @@
+#include "generator/clip_polygon.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "geometry/closest_point.h"
+
+namespace mfz {
+
+bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane) {
+  out.clear();
+  if (in.empty()) return true;
+  bool ok = true;
+  Vec3 start = in[in.size() - 1];
+  double d_start = plane.signed_distance(start);
+  for (int k = 0; k < in.size(); ++k) {
+    const Vec3& end = in[k];
+    const double d_end = plane.signed_distance(end);
+    const bool start_inside = d_start <= on_plane, end_inside = d_end <= on_plane;
+    // An edge whose inside end is on the plane crosses it there: that end is
+    // kept anyway. Interpolating would divide rounding by rounding when the
+    // edge lies in the plane, and put the crossing anywhere along it (F23).
+    if (start_inside != end_inside && std::min(d_start, d_end) <= 0) {
+      // The signs differ strictly (one <= 0, the other > 0), so the
+      // denominator is never zero and t lies in [0, 1].
+      const double t = d_start / (d_start - d_end);
+      ok &= out.push(start + t * (end - start));
+    }
+    if (end_inside) ok &= out.push(end);
+    start = end;
+    d_start = d_end;
+  }
+  return ok;
+}
+
+void remove_points_outside(ClipPolygon& polygon, const Plane& plane) {
+  for (int k = polygon.size() - 1; k >= 0; --k)
+    if (plane.signed_distance(polygon[k]) > 0) polygon.erase(k);
+}
+
+
+void reduce_polygon(ClipPolygon& polygon, int capacity) {
+  while (polygon.size() > capacity) {
+    const int n = polygon.size();
+    int weakest = 0;
+    double least = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < n; ++k) {
+      const Vec3& prev = polygon[(k + n - 1) % n];
+      const Vec3& next = polygon[(k + 1) % n];
+      const double area = (polygon[k] - prev).cross(next - polygon[k]).norm();
+      if (area < least) least = area, weakest = k;
+    }
+    polygon.erase(weakest);
+  }
+}
+
+}  // namespace mfz

@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// Sutherland-Hodgman clipping of a convex polygon in 3-d against planes, on
+/// fixed-capacity storage (no heap in the generator's hot path).
+#include <algorithm>
+#include <array>
+
+#include "geometry/closest_point.h"
+#include "geometry/vec.h"
+
+namespace mfz {
+
+/// Room for an incident face and one extra vertex per side plane.
+inline constexpr int kMaxPolygonVertices = 512;
+
+/// The plane `normal . x = offset`; its inside is `normal . x <= offset`.
+struct Plane {
+  Vec3 normal;
+  double offset = 0;
+  double signed_distance(const Vec3& p) const { return normal.dot(p) - offset; }
+};
+
+/// A polygon of at most kMaxPolygonVertices points, in loop order.
+class ClipPolygon {
+ public:
+  int size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  const Vec3& operator[](int i) const { return points_[i]; }
+  void clear() { size_ = 0; }
+  /// False, and nothing added, when full.
+  bool push(const Vec3& p) {
+    if (size_ == kMaxPolygonVertices) return false;
+    points_[size_++] = p;
+    return true;
+  }
+  /// Takes `other`'s points: only the ones in use, not the whole capacity
+  /// (12 KiB), which a clip pass per side plane would otherwise copy.
+  void take(const ClipPolygon& other) {
+    std::copy(other.points_.begin(), other.points_.begin() + other.size_, points_.begin());
+    size_ = other.size_;
+  }
+  void erase(int i) {
+    for (int k = i + 1; k < size_; ++k) points_[k - 1] = points_[k];
+    --size_;
+  }
+
+ private:
+  std::array<Vec3, kMaxPolygonVertices> points_;
+  int size_ = 0;
+};
+
+/// One Sutherland-Hodgman pass: keeps the part of `in` inside `plane`, adding
+/// the crossing point of every edge that crosses it. `out` must not alias
+/// `in`. A point within `on_plane` of the plane is on it: inside, and its own
+/// crossing point (0: only a point exactly on the plane). Returns false if
+/// `out` overflowed (cannot happen when in.size() < capacity).
+bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0);
+
+/// The tutorial's last step: drops the points outside `plane` without adding
+/// crossing points (it wants contact points, not the clipped polygon).
+void remove_points_outside(ClipPolygon& polygon, const Plane& plane);
+
+/// Removes, one at a time, the point whose triangle with its two neighbours
+/// has the least area, until at most `capacity` are left: the polygon's shape,
+/// and so the support it gives a solver, changes least.
+void reduce_polygon(ClipPolygon& polygon, int capacity);
+
+}  // namespace mfz

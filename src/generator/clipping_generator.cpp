@@ -1,0 +1,357 @@
+#include "generator/clipping_generator.h"
+
+#include <cmath>
+#include <limits>
+
+#include "generator/clip_polygon.h"
+#include "generator/coplanar_patch.h"
+#include "geometry/tolerances.h"
+
+namespace mfz {
+
+namespace {
+
+// Enough for the apex of a 64-sided pyramid, whose side faces all tie (F15).
+constexpr int kMaxTiedFaces = 64;
+
+// F10's slack: within it of the furthest, a vertex is as far. The hull's
+// extent along the direction sets the scale, the world coordinates the rounding.
+double furthest_slack(const PosedHull& hull, const Vec3& direction, double furthest) {
+  double nearest = furthest;
+  for (int i = 0; i < hull.vertex_count(); ++i) nearest = std::min(nearest, direction.dot(hull.world_vertex(i)));
+  return tol::kTie * (furthest - nearest) + tol::world_rounding(std::abs(furthest));
+}
+
+// Faces that hold the support vertex, or with over_ties any vertex as far.
+template <class Visit>
+void faces_at_support(const PosedHull& hull, const Vec3& direction, int support, bool over_ties, Visit&& visit) {
+  const double furthest = direction.dot(hull.world_vertex(support));
+  const double slack = over_ties ? furthest_slack(hull, direction, furthest) : -1;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    bool contains = false;
+    for (int k = 0; k < hull.face_size(f) && !contains; ++k) {
+      const int v = hull.face_vertex(f, k);
+      contains = v == support || direction.dot(hull.world_vertex(v)) >= furthest - slack;
+    }
+    if (contains) visit(f, hull.world_face_normal(f).dot(direction));
+  }
+}
+
+// Equal to rounding: two tied faces clip their shared edge from both ends.
+// Rounding is a few ulps of the coordinates the clip worked with (the
+// reference face's, `resolution`) whatever the hull's size: a relative
+// 1e-12 was 4500 ulps, and 1e6 L from the origin it merged the corners of a
+// slab 1e-6 thick (FINDINGS F19).
+bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution) {
+  const double same = tol::world_rounding(std::max(resolution, p.cwiseAbs().maxCoeff()));
+  for (int k = 0; k < points.size(); ++k)
+    if ((points[k] - p).norm() <= same) return true;
+  return false;
+}
+
+double largest_coordinate(const ClipPolygon& polygon) {
+  double largest = 0;
+  for (int k = 0; k < polygon.size(); ++k) largest = std::max(largest, polygon[k].cwiseAbs().maxCoeff());
+  return largest;
+}
+
+}  // namespace
+
+int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties) {
+  support = hull.support_vertex(direction);
+  int best = -1;
+  double most_parallel = -std::numeric_limits<double>::infinity();
+  faces_at_support(hull, direction, support, over_ties, [&](int f, double alignment) {
+    if (alignment > most_parallel) most_parallel = alignment, best = f;
+  });
+  return best;
+}
+
+int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity) {
+  const int support = hull.support_vertex(direction);
+  double most_parallel = -std::numeric_limits<double>::infinity();
+  faces_at_support(hull, direction, support, true,
+                   [&](int, double alignment) { most_parallel = std::max(most_parallel, alignment); });
+  int count = 0;
+  faces_at_support(hull, direction, support, true, [&](int f, double alignment) {
+    if (alignment >= most_parallel - tol::kTie && count < capacity) out[count++] = f;
+  });
+  return count;
+}
+
+namespace {
+
+// Callers test `trace` first: building the message would allocate.
+void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
+  ClipTrace::Step step{std::move(what), {}};
+  for (int k = 0; k < polygon.size(); ++k) step.polygon.push_back(polygon[k]);
+  trace->steps.push_back(std::move(step));
+}
+
+}  // namespace
+
+void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
+  out.clear();
+  for (int k = 0; k < hull.face_size(face); ++k) out.push(hull.world_face_point(face, k));
+}
+
+// The tutorial clips against "the adjacent faces" of the reference face: the plane
+// of the face across each of its edges, kept side inward.
+bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+  const PosedHull& hull = *reference.hull;
+  const int n = hull.face_size(reference.index);
+  ClipPolygon scratch;
+  for (int k = 0; k < n; ++k) {
+    const int v0 = hull.face_vertex(reference.index, k), v1 = hull.face_vertex(reference.index, (k + 1) % n);
+    const int adjacent = hull.face_across(v0, v1);
+    if (adjacent < 0) continue;  // an open hull: no plane to clip against
+    const Vec3 normal = hull.world_face_normal(adjacent);
+    const Plane side{normal, normal.dot(hull.world_vertex(v0))};
+    if (!clip_to_plane(incident, side, scratch)) return false;
+    incident.take(scratch);
+    if (trace)
+      record(trace, "clipped against the plane of face " + std::to_string(adjacent) + " (across edge " +
+                        std::to_string(v0) + "-" + std::to_string(v1) + ")", incident);
+  }
+  return true;
+}
+
+// F1: the clipping method's contact region is the prism over the reference
+// face. The adjacent faces' planes only bound it where those faces stand
+// perpendicular; where they slope inwards the region reaches past the face and
+// point_on_a leaves the hull.
+bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+  const ClipPolygon& loop = *reference.polygon;
+  const int n = loop.size();
+  // F23: an incident edge that lies in a side plane is on it, not across it
+  // by a rounding error at each end.
+  const double on_plane = tol::world_rounding(std::max(largest_coordinate(loop), largest_coordinate(incident)));
+  ClipPolygon scratch;
+  for (int k = 0; k < n; ++k) {
+    const Vec3& from = loop[k];
+    const Vec3& to = loop[(k + 1) % n];
+    // The loop runs counter-clockwise about the outward normal, so edge x
+    // normal points out of the face, in its plane. Its length is the edge's
+    // (never zero on a validated hull); normalising keeps distances in lengths.
+    const Vec3 outward = (to - from).cross(reference.normal);
+    const double length = outward.norm();
+    if (!(length > 0)) continue;
+    const Plane side{outward / length, outward.dot(from) / length};
+    if (!clip_to_plane(incident, side, scratch, on_plane)) return false;
+    incident.take(scratch);
+    if (trace)
+      record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
+  }
+  return true;
+}
+
+namespace {
+
+void add_contact(mfz_manifold& out, const Vec3& on_a, const Vec3& on_b, double penetration) {
+  mfz_contact& c = out.contacts[out.contact_count++];
+  c.point_on_a = to_abi(on_a);
+  c.point_on_b = to_abi(on_b);
+  c.penetration = penetration;
+}
+
+// F17: the last resort when neither clipping nor the edges give a contact (the
+// reference face is one half of a fold, and the other hull's vertex pokes into
+// the other half): the incident hull's deepest vertex, paired with the point
+// where a ray from it along n leaves the reference hull. Both points are on
+// their surfaces by construction, and the ray's length is at most the depth,
+// since moving B by depth n separates the hulls.
+void deepest_vertex_contact(const PosedHull& reference, const PosedHull& incident, const Vec3& n, bool flipped,
+                            mfz_manifold& out) {
+  // Into the reference hull, and the way out of it along the normal.
+  const Vec3 into = flipped ? n : Vec3(-n);
+  const Vec3 out_of = -into;
+  const Vec3 vertex = incident.world_vertex(incident.support_vertex(into));
+  double exit = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < reference.face_count(); ++f) {
+    const Vec3 normal = reference.world_face_normal(f);
+    const double below = normal.dot(reference.world_face_point(f, 0) - vertex);
+    if (below < 0) return;  // the vertex is not inside the reference hull: no contact here
+    const double rate = normal.dot(out_of);
+    if (!(rate > 0)) continue;  // the ray does not leave through a face it runs along or away from
+    exit = std::min(exit, below / rate);
+  }
+  if (!(exit > 0) || !std::isfinite(exit)) return;
+  const double p = -exit;
+  if (flipped)
+    add_contact(out, vertex, vertex + p * n, p);
+  else
+    add_contact(out, vertex - p * n, vertex, p);
+}
+
+
+}  // namespace
+
+// The tutorial's last loop: each clipped point is on the incident face; its depth
+// is measured from the closest point of the reference polygon, along n.
+void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
+                   mfz_manifold& out) {
+  const ClipPolygon& loop = *reference.polygon;
+  for (int k = 0; k < clipped.size(); ++k) {
+    const Vec3& point = clipped[k];
+    const Vec3 on_reference = closest_point_on_polygon(point, &loop[0], loop.size(), reference.normal);
+    double penetration = (point - on_reference).dot(n);
+    if (flipped) penetration = -penetration;
+    if (!(penetration < 0)) continue;  // the tutorial's sanity check: above the reference face, not a contact
+    if (flipped)
+      add_contact(out, point, point + penetration * n, penetration);  // incident face is A's
+    else
+      add_contact(out, point - penetration * n, point, penetration);  // incident face is B's
+  }
+}
+
+bool tutorial_reference_is_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
+  return std::abs(sat.normal.dot(face_a.normal)) < std::abs(sat.normal.dot(face_b.normal));
+}
+
+// F13: the tutorial's "more parallel" rule ties when the other face is parallel
+// to rounding, and then the order of the arguments chooses, which swapping A
+// and B changes. The face SAT found is the reference face.
+bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
+  if (sat.kind == AxisKind::face_a) return false;
+  if (sat.kind == AxisKind::face_b) return true;
+  return tutorial_reference_is_b(sat, face_a, face_b);
+}
+
+ClippingSteps::ClippingSteps()
+    : face_polygon(coplanar_patch),
+      reference_is_b(sat_face_is_reference),
+      clip_to_sides(clip_to_reference_prism),
+      edge_contact(closest_points_of_edges),
+      emit_contacts(emit_clipped_contacts) {}
+
+ClippingSteps tutorial_steps() {
+  ClippingSteps steps;
+  steps.clip_to_sides = clip_to_adjacent_face_planes;
+  steps.face_polygon = face_loop;
+  steps.edge_contact = no_edge_contact;
+  steps.sat = run_tutorial_sat;
+  steps.significant_face_from_sat = false;
+  steps.significant_face_over_ties = false;
+  steps.reference_is_b = tutorial_reference_is_b;
+  steps.frame_at_a = false;
+  return steps;
+}
+
+// Outline, after the tutorial's CollisionDetectionSAT::GenContactPoints:
+//  1. SAT gives the normal n (A to B) and the depth; no contacts unless p < 0.
+//  2. Significant faces: A's along n, B's along -n.
+//  3. The one more parallel to n is the reference face, the other incident
+//     ("flipped" when the reference face is B's).
+//  4. Clip the incident face against the planes of the faces adjacent to the
+//     reference face (Sutherland-Hodgman).
+//  5. Remove the points above the reference plane.
+//  6. Each remaining point is a contact with its own penetration.
+namespace {
+
+int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_hull& hull_b, const Pose& pose_b,
+                          mfz_manifold& out, ClipTrace* trace, const ClippingSteps& steps) {
+  const PosedHull a(hull_a, pose_a), b(hull_b, pose_b);
+  const SatResult sat = steps.sat(a, b);
+  if (trace) trace->sat = sat;
+  out.contact_count = 0;
+  out.colliding = sat.separated ? 0 : 1;
+  out.normal = to_abi(sat.normal);
+  out.penetration = sat.separated ? 0.0 : -sat.depth;
+  if (sat.separated || !(out.penetration < 0)) return 0;
+  const Vec3 n = sat.normal;
+  if (sat.kind == AxisKind::edge_edge && steps.edge_contact(a, b, sat, out)) {
+    if (trace) trace->edge_contact = true;
+    return 0;
+  }
+
+  int support_a = -1, support_b = -1;
+  ClipFace face_a{&a, significant_face(a, n, support_a, steps.significant_face_over_ties), {}};
+  ClipFace face_b{&b, significant_face(b, -n, support_b, steps.significant_face_over_ties), {}};
+  if (steps.significant_face_from_sat && sat.kind == AxisKind::face_a) face_a.index = sat.feature_a;
+  if (steps.significant_face_from_sat && sat.kind == AxisKind::face_b) face_b.index = sat.feature_b;
+  if (trace) trace->face_a = face_a.index, trace->face_b = face_b.index, trace->support_a = support_a,
+             trace->support_b = support_b;
+  if (face_a.index < 0 || face_b.index < 0) return 1;  // a vertex in no face: not a hull
+  face_a.normal = a.world_face_normal(face_a.index);
+  face_b.normal = b.world_face_normal(face_b.index);
+
+  // The tutorial's single-point branch is for curved shapes, whose "face" is one
+  // point; a hull's faces have three or more vertices, so here it only catches
+  // a degenerate face handed in through the ABI: the support point is the contact.
+  if (a.face_size(face_a.index) < 3) {
+    const Vec3 point = a.world_vertex(support_a);
+    add_contact(out, point, point + out.penetration * n, out.penetration);
+    return 0;
+  }
+  if (b.face_size(face_b.index) < 3) {
+    const Vec3 point = b.world_vertex(support_b);
+    add_contact(out, point - out.penetration * n, point, out.penetration);
+    return 0;
+  }
+
+  const bool flipped = steps.reference_is_b(sat, face_a, face_b);
+  if (trace) trace->flipped = flipped;
+  ClipFace& reference = flipped ? face_b : face_a;
+  const ClipFace& incident = flipped ? face_a : face_b;
+  ClipPolygon reference_polygon, polygon, clipped;
+  steps.face_polygon(*reference.hull, reference.index, reference_polygon);
+  reference.polygon = &reference_polygon;
+  // F11: equally aligned incident faces (a symmetric corner) are all clipped
+  // and their contacts joined: picking one would leave the choice to rounding.
+  int incident_faces[kMaxTiedFaces] = {incident.index};
+  int tied = 1;
+  if (steps.significant_face_over_ties)
+    tied = tied_significant_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
+  const double resolution = largest_coordinate(reference_polygon);
+  const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
+  const Plane reference_plane{reference.normal, reference.normal.dot(on_reference)};
+  for (int i = 0; i < tied; ++i) {
+    steps.face_polygon(*incident.hull, incident_faces[i], polygon);
+    // Each side plane can add one point: refuse rather than overflow.
+    if (polygon.size() + reference_polygon.size() >= kMaxPolygonVertices) return 1;
+    if (trace) record(trace, "incident face " + std::to_string(incident_faces[i]), polygon);
+    if (!steps.clip_to_sides(reference, polygon, trace)) return 1;
+    remove_points_outside(polygon, reference_plane);
+    if (trace) record(trace, "points above the reference plane removed", polygon);
+    for (int k = 0; k < polygon.size(); ++k) {
+      // Only F11's joined faces share points; the tutorial keeps every point.
+      if (steps.significant_face_over_ties && holds_point(clipped, polygon[k], resolution)) continue;
+      if (!clipped.push(polygon[k])) return 1;
+    }
+  }
+  reduce_polygon(clipped, MFZ_MAX_CONTACTS);
+  steps.emit_contacts(reference, clipped, n, flipped, out);
+  // F16: where a face axis ties with an edge axis, the edges can cross just
+  // beyond the reference face (a fold of 1e-9 rad in the other hull), and the
+  // prism clips everything away. The supporting edges then give the contact.
+  if (out.contact_count == 0 && steps.edge_contact(a, b, sat, out) && trace) trace->edge_contact = true;
+  if (out.contact_count == 0 && steps.significant_face_over_ties)
+    deepest_vertex_contact(*reference.hull, *incident.hull, n, flipped, out);
+  return 0;
+}
+
+void shift_contacts(mfz_manifold& out, const Vec3& by) {
+  for (int i = 0; i < out.contact_count; ++i) {
+    out.contacts[i].point_on_a = to_abi(Vec3(to_vec(out.contacts[i].point_on_a) + by));
+    out.contacts[i].point_on_b = to_abi(Vec3(to_vec(out.contacts[i].point_on_b) + by));
+  }
+}
+
+}  // namespace
+
+int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_pose_a, const mfz_hull& hull_b,
+                                   const mfz_pose& abi_pose_b, mfz_manifold& out, ClipTrace* trace,
+                                   const ClippingSteps& steps) {
+  const Pose pose_a = Pose::from_abi(abi_pose_a), pose_b = Pose::from_abi(abi_pose_b);
+  if (!steps.frame_at_a) return generate_in_frame(hull_a, pose_a, hull_b, pose_b, out, trace, steps);
+  const Vec3 origin = pose_a.position;
+  const Pose local_a{Vec3::Zero(), pose_a.orientation}, local_b{pose_b.position - origin, pose_b.orientation};
+  const int32_t status = generate_in_frame(hull_a, local_a, hull_b, local_b, out, trace, steps);
+  shift_contacts(out, origin);
+  if (trace)
+    for (ClipTrace::Step& step : trace->steps)
+      for (Vec3& p : step.polygon) p += origin;
+  return status;
+}
+
+}  // namespace mfz

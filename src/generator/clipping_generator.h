@@ -1,0 +1,117 @@
+#pragma once
+/// \file
+/// The built-in contact-manifold generator: the tutorial's clipping method
+/// ("Physics Tutorial 5: Collision Manifolds", docs/generator.md), fixed where
+/// the harness showed it wrong (FINDINGS.md), with the project's conventions.
+#include <string>
+#include <vector>
+
+#include "manifuzz/abi.h"
+#include "generator/sat.h"
+
+namespace mfz {
+
+/// What the generator did, step by step, for `manifuzz explain`. Filled only
+/// when a trace is asked for; the hot path passes nullptr and allocates nothing.
+struct ClipTrace {
+  SatResult sat;
+  int face_a = -1, face_b = -1;  ///< significant faces
+  int support_a = -1, support_b = -1;  ///< the vertices they were chosen from
+  bool flipped = false;          ///< true: B's face is the reference face
+  bool edge_contact = false;     ///< the contact came from the two supporting edges
+  struct Step {
+    std::string what;
+    std::vector<Vec3> polygon;
+  };
+  std::vector<Step> steps;       ///< the incident polygon after each clip
+};
+
+class ClipPolygon;
+
+/// A significant face in world space, and the polygon that stands for it.
+struct ClipFace {
+  const PosedHull* hull = nullptr;
+  int index = -1;
+  Vec3 normal;  ///< world, outward
+  const ClipPolygon* polygon = nullptr;  ///< world loop, counter-clockwise about normal
+};
+
+/// The generator's steps, each replaceable: the project's deliberately broken
+/// generators (tests/mutants) swap one step each, so the harness can be shown
+/// to catch each bug. The defaults are the built-in generator.
+struct ClippingSteps {
+  /// The separating-axis test.
+  SatResult (*sat)(const PosedHull& a, const PosedHull& b) = run_sat;
+  /// F8: on a face axis, that face is its hull's significant face (the tutorial
+  /// finds both significant faces from the support vertex, which can land on
+  /// a neighbouring face).
+  bool significant_face_from_sat = true;
+  /// F10: a significant face is chosen among the faces of every vertex
+  /// equally far along the direction (within rounding), not only of the one
+  /// that rounding makes furthest; F11: equally aligned incident faces are all
+  /// clipped. Either way rounding does not choose the manifold.
+  bool significant_face_over_ties = true;
+  /// F21: work in a frame whose origin is A's position, not the world's, so
+  /// that a far frame rounds B's pose once instead of rounding every
+  /// decision (which edge is deepest, which face ties) by eps M.
+  bool frame_at_a = true;
+  /// The world polygon of a significant face.
+  void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
+  /// True when B's significant face is the reference face.
+  bool (*reference_is_b)(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
+  /// Clips the incident polygon against the reference face's side planes;
+  /// false if a buffer would overflow.
+  bool (*clip_to_sides)(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
+  /// On an edge-edge axis: writes the contact(s) into `out` and returns true,
+  /// or returns false to clip faces as for a face axis.
+  bool (*edge_contact)(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
+  /// Writes the contacts for the clipped points into `out`.
+  void (*emit_contacts)(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
+                        mfz_manifold& out);
+  ClippingSteps();
+};
+
+/// The tutorial's steps exactly, before the harness's findings (FINDINGS.md) fixed
+/// them: the `manifuzz_tutorial` plugin, against which every finding's case fails.
+ClippingSteps tutorial_steps();
+
+/// The tutorial's polygon: the face's own loop.
+void face_loop(const PosedHull& hull, int face, ClipPolygon& out);
+
+/// The tutorial: edge axes are clipped like face axes.
+bool no_edge_contact(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
+/// F3: the closest points of the two supporting edges are the one contact.
+bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
+
+/// The tutorial's rule: the significant face more parallel to n is the reference.
+bool tutorial_reference_is_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
+/// F13: on a face axis, that face is the reference face; otherwise the tutorial's rule.
+bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
+/// The tutorial's clip: Sutherland-Hodgman against the planes of the faces adjacent
+/// to the reference face. Wrong where those faces slope inwards (FINDINGS.md F1).
+bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
+/// Sutherland-Hodgman against the prism over the reference face: through each
+/// edge, the plane perpendicular to the face.
+bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
+/// Each point a contact, its depth measured from the reference polygon along n.
+void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
+                           mfz_manifold& out);
+
+/// Fills `out` for hulls a and b at their poses (orientations unit length).
+/// Returns 0, or 1 when it refuses: a face too large for its fixed buffers.
+int32_t generate_clipping_manifold(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b,
+                                   const mfz_pose& pose_b, mfz_manifold& out, ClipTrace* trace = nullptr,
+                                   const ClippingSteps& steps = ClippingSteps());
+
+/// The faces `significant_face` could pick with over_ties, all equally
+/// aligned within tol::kTie (F11); at most `capacity` into `out`.
+int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity);
+
+/// The face of `hull` the tutorial calls significant for `direction`: of the faces
+/// that contain the vertex furthest along `direction`, the one whose normal is
+/// most parallel to it (first of equals). Sets `support` to that vertex.
+/// With `over_ties`, the faces of every vertex within rounding of the
+/// furthest compete (F10).
+int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties = false);
+
+}  // namespace mfz

@@ -1,0 +1,16 @@
+#pragma once
+/// \file
+/// Coplanar patches: the largest set of faces around a face that lie in its
+/// plane (normals within tol::kCoplanarSine), and the patch's boundary loop.
+#include "generator/clip_polygon.h"
+#include "geometry/posed_hull.h"
+
+namespace mfz {
+
+/// The boundary of the patch around `face`, world space, counter-clockwise
+/// about the face's normal; the face's own loop when it stands alone.
+void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out);
+/// The patch's area (the same whether the face arrived whole or triangulated).
+double patch_area(const PosedHull& hull, int face);
+
+}  // namespace mfz

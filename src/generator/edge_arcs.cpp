@@ -1,0 +1,76 @@
+#include "generator/edge_arcs.h"
+
+#include <algorithm>
+
+namespace mfz {
+
+namespace {
+
+// A loop step v0 -> v1 with v0 > v1: the twin side of the edge {v1, v0}.
+struct TwinStep {
+  long long key;  // smaller vertex * V + larger vertex
+  int face;
+};
+
+long long edge_key(int low, int high, int vertex_count) {
+  return static_cast<long long>(low) * vertex_count + high;
+}
+
+}  // namespace
+
+EdgeArcs::EdgeArcs(const PosedHull& hull) {
+  if (hull.vertex_count() > kCachedVertices) return;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    const int n = hull.face_size(f);
+    for (int k = 0; k < n; ++k) {
+      const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
+      if (v0 >= v1) continue;
+      if (count_ == kMaxArcs) return;
+      arcs_[count_++] = {v0, v1, f, -1, hull.world_face_normal(f), Vec3::Zero(), Vec3::Zero()};
+    }
+  }
+  complete_ = pair_twins(hull);
+}
+
+// Sorting the twin steps pairs every edge with its other face in E log E.
+bool EdgeArcs::pair_twins(const PosedHull& hull) {
+  TwinStep twins[kMaxArcs];
+  int twin_count = 0;
+  const int vertices = hull.vertex_count();
+  for (int f = 0; f < hull.face_count(); ++f) {
+    const int n = hull.face_size(f);
+    for (int k = 0; k < n; ++k) {
+      const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
+      if (v0 <= v1) continue;
+      if (twin_count == kMaxArcs) return false;
+      twins[twin_count++] = {edge_key(v1, v0, vertices), f};
+    }
+  }
+  if (twin_count != count_) return false;
+  std::sort(twins, twins + twin_count, [](const TwinStep& x, const TwinStep& y) { return x.key < y.key; });
+  for (int i = 0; i < count_; ++i) {
+    EdgeArc& arc = arcs_[i];
+    const long long key = edge_key(arc.v0, arc.v1, vertices);
+    const TwinStep* found = std::lower_bound(twins, twins + twin_count, key,
+                                             [](const TwinStep& t, long long k) { return t.key < k; });
+    if (found == twins + twin_count || found->key != key) return false;
+    arc.twin = found->face;
+    arc.n_twin = hull.world_face_normal(arc.twin);
+    arc.across = arc.n_twin.cross(arc.n_face);
+  }
+  return true;
+}
+
+// The arcs of A's edge (a -> b) and of B's edge negated (c -> d) cross when
+// c and d lie either side of the plane of a, b, a and b either side of the
+// plane of c, d, and the two crossings are one point, not antipodes.
+bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
+  const double cba = -edge_b.n_face.dot(edge_a.across);
+  const double dba = -edge_b.n_twin.dot(edge_a.across);
+  const double adc = edge_a.n_face.dot(edge_b.across);
+  const double bdc = edge_a.n_twin.dot(edge_b.across);
+  constexpr double slack = tol::kGaussArcSlack;
+  return cba * dba < slack && adc * bdc < slack && cba * bdc > -slack;
+}
+
+}  // namespace mfz

@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// A posed hull's edges on its Gauss map: each edge is the arc between the
+/// world normals of its two faces. An edge of A and an edge of B span a face
+/// of the Minkowski difference A - B only where A's arc crosses B's arc
+/// negated, and only such a face can hold the penetration axis: every other
+/// edge pair's overlap is larger (Gregorius, "The Separating Axis Test
+/// between Convex Polyhedra", GDC 2013). Pruning the other pairs turns SAT's
+/// E_A x E_B projections into a handful.
+///
+/// Built on the stack, so a generator call still allocates nothing; a hull
+/// too large for the arrays, or one whose edges do not pair up, reports
+/// `complete() == false` and SAT then tries every pair as the tutorial does.
+#include "geometry/posed_hull.h"
+
+namespace mfz {
+
+/// Every polyhedron with V vertices has at most 3V - 6 edges.
+inline constexpr int kMaxArcs = 3 * kCachedVertices;
+
+struct EdgeArc {
+  int v0, v1;      ///< v0 < v1; the step v0 -> v1 lies in the loop of `face`
+  int face, twin;  ///< the faces on either side
+  Vec3 n_face, n_twin;  ///< their world normals: the arc's ends
+  Vec3 across;     ///< n_twin x n_face: normal to the arc's great circle
+};
+
+class EdgeArcs {
+ public:
+  /// The arcs in SAT's edge order: loop steps with v0 < v1, faces in order.
+  explicit EdgeArcs(const PosedHull& hull);
+  bool complete() const { return complete_; }
+  int size() const { return count_; }
+  const EdgeArc& operator[](int i) const { return arcs_[i]; }
+
+ private:
+  bool pair_twins(const PosedHull& hull);
+
+  EdgeArc arcs_[kMaxArcs];
+  int count_ = 0;
+  bool complete_ = false;
+};
+
+/// False only when the arcs certainly do not cross, so that the pair spans
+/// no face of A - B. Rounding of the sign tests is given the benefit of the
+/// doubt: a flat or nearly flat edge (a fold of 1e-9 rad) is kept, and SAT's
+/// own rules decide about it as before.
+bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b);
+
+}  // namespace mfz

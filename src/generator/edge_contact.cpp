@@ -1,0 +1,99 @@
+// F3 (FINDINGS.md): on an edge-edge axis neither significant face is
+// perpendicular to n, so clipping one against the other puts point_on_b off
+// B's surface. The contact is instead the closest pair of points of the two
+// edges that support the hulls along n and -n.
+#include <cmath>
+#include <limits>
+
+#include "generator/clipping_generator.h"
+#include "geometry/closest_point.h"
+#include "geometry/tolerances.h"
+
+namespace mfz {
+namespace {
+
+struct Segment {
+  Vec3 from, to;
+};
+
+/// At most this many edges per hull compete for the supporting edge.
+constexpr int kMaxSupportingEdges = 32;
+
+// The supporting edges along `direction`: the edge whose nearer end reaches
+// furthest along it, and every edge within rounding of that reach. The axis
+// alone defines them: SAT may have met the axis through any edge
+// perpendicular to it, and several can be (F6: a frustum's polygon edges);
+// nor is a test for perpendicular edges right, which a nearly parallel twin
+// 1e-9 rad off fails depending on which of the two made the axis (F12).
+// Returns how many were written to `edges`.
+int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edges) {
+  double best = -std::numeric_limits<double>::infinity(), lowest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < hull.vertex_count(); ++i) lowest = std::min(lowest, direction.dot(hull.world_vertex(i)));
+  const auto each_edge = [&](auto&& visit) {
+    for (int f = 0; f < hull.face_count(); ++f) {
+      const int n = hull.face_size(f);
+      for (int k = 0; k < n; ++k) {
+        const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
+        if (v0 < v1) visit(v0, v1, f, std::min(direction.dot(hull.world_vertex(v0)), direction.dot(hull.world_vertex(v1))));
+      }
+    }
+  };
+  // F22: a diagonal between two triangles of one face would add a contact
+  // that the face untriangulated does not have.
+  each_edge([&](int v0, int v1, int f, double reach) {
+    if (reach > best && !hull.is_flat_edge(v0, v1, f)) best = reach;
+  });
+  const double slack = tol::kTie * (best - lowest) + tol::world_rounding(std::abs(best));
+  int count = 0;
+  each_edge([&](int v0, int v1, int f, double reach) {
+    if (count < kMaxSupportingEdges && reach >= best - slack && !hull.is_flat_edge(v0, v1, f))
+      edges[count++] = {hull.world_vertex(v0), hull.world_vertex(v1)};
+  });
+  return count;
+}
+
+bool holds_contact(const mfz_manifold& out, int first, const Vec3& point_a) {
+  for (int k = first; k < out.contact_count; ++k)
+    if (to_vec(out.contacts[k].point_on_a) == point_a) return true;
+  return false;
+}
+
+}  // namespace
+
+bool no_edge_contact(const PosedHull&, const PosedHull&, const SatResult&, mfz_manifold&) { return false; }
+
+bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out) {
+  Segment edges_a[kMaxSupportingEdges], edges_b[kMaxSupportingEdges];
+  const int count_a = supporting_edges(a, sat.normal, edges_a);
+  const int count_b = supporting_edges(b, -sat.normal, edges_b);
+  // Every candidate pair whose closest points lie along n at the depth, to
+  // rounding: the pairs that cross (F16). Where two parallel edges of one
+  // hull are equally deep to rounding (an edge across a thin face turned
+  // 1e-6 rad from n, 1e6 L out), each crossing is a contact: picking one
+  // would leave a contact a face's width away to rounding (F20).
+  const int first = out.contact_count;
+  for (int i = 0; i < count_a; ++i)
+    for (int j = 0; j < count_b; ++j) {
+      Vec3 point_a, point_b;
+      closest_between_segments(edges_a[i].from, edges_a[i].to, edges_b[j].from, edges_b[j].to, point_a, point_b);
+      const double miss = (point_b - (point_a - sat.depth * sat.normal)).norm();
+      // The tolerance adds the rounding of world coordinates far from the origin.
+      const double reach = (edges_a[i].to - edges_a[i].from).norm() + (edges_b[j].to - edges_b[j].from).norm();
+      const double extent = edges_a[i].from.cwiseAbs().maxCoeff() + edges_b[j].from.cwiseAbs().maxCoeff();
+      const double slack = tol::kEdgesCross * reach + tol::world_rounding(extent);
+      // Only edges whose shadows along n cross make an edge contact; otherwise
+      // the axis came from a near-tie with a face axis: clip faces instead.
+      if (!(miss <= slack)) continue;
+      // point_on_b = point_on_a + p n exactly; the edge's own closest point
+      // agrees with it to rounding, because n is the edges' common normal.
+      const double p = -(point_a - point_b).dot(sat.normal);
+      if (!(p < 0) || out.contact_count == MFZ_MAX_CONTACTS || holds_contact(out, first, point_a)) continue;
+      mfz_contact& c = out.contacts[out.contact_count++];
+      c.point_on_a = to_abi(point_a);
+      c.point_on_b = to_abi(Vec3(point_a + p * sat.normal));
+      c.penetration = p;
+    }
+  return out.contact_count > first;
+}
+
+}  // namespace mfz

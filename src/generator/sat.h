@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// The separating-axis test the tutorial's generator starts from: every face
+/// normal of A, every face normal of B, and the cross product of every edge of
+/// A with every edge of B; the axis of least overlap gives the collision
+/// normal and the penetration.
+#include "geometry/axis_kind.h"
+#include "geometry/posed_hull.h"
+
+namespace mfz {
+
+/// The outcome of SAT. When `separated`, `normal` is a separating axis and
+/// `depth` the (negative) overlap along it; otherwise `normal` is the unit axis
+/// of least overlap oriented from A towards B and `depth` >= 0 the overlap.
+struct SatResult {
+  bool separated = false;
+  Vec3 normal = Vec3::UnitZ();
+  double depth = 0;
+  AxisKind kind = AxisKind::face_a;
+  int feature_a = -1;  ///< face of A, or edge of A (index into its unique edges in loop order)
+  int feature_b = -1;  ///< face of B, or edge of B
+};
+
+/// Overlap of A and B along a unit world axis, and which way B lies.
+/// Returns the smaller of the two overlaps; `b_along_axis` tells whether it is
+/// the one with B on the +axis side (so the normal from A to B is +axis).
+double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, bool& b_along_axis);
+
+/// SAT as the tutorial runs it: candidates in the order A's faces, B's faces,
+/// edge pairs; a candidate replaces the best only when its overlap is strictly
+/// smaller, so the earlier axis wins an exact tie. Stops at the first
+/// separating axis. Allocates nothing.
+SatResult run_tutorial_sat(const PosedHull& a, const PosedHull& b);
+/// The built-in generator's SAT: the tutorial's, except that an edge axis must
+/// beat the face axes by tol::kEdgeAxisBias (F3), edges between coplanar
+/// faces give no axis (F4), a face normal counts one way only (F7), and only
+/// edge pairs whose Gauss arcs may cross are tried (edge_arcs.h).
+SatResult run_sat(const PosedHull& a, const PosedHull& b);
+/// run_sat trying every edge pair: what the pruning must agree with.
+SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b);
+
+}  // namespace mfz

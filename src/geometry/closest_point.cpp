@@ -1,0 +1,98 @@
+#include "geometry/closest_point.h"
+
+#include <cmath>
+#include <limits>
+
+namespace mfz {
+
+Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double length_sq = ab.squaredNorm();
+  if (length_sq == 0) return a;
+  double t = (p - a).dot(ab) / length_sq;
+  t = t < 0 ? 0 : (t > 1 ? 1 : t);
+  return a + t * ab;
+}
+
+namespace {
+
+Vec3 closest_on_edges(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  Vec3 best = closest_on_segment(p, a, b);
+  for (const Vec3& q : {closest_on_segment(p, b, c), closest_on_segment(p, c, a)})
+    if ((q - p).squaredNorm() < (best - p).squaredNorm()) best = q;
+  return best;
+}
+
+}  // namespace
+
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  if (ab.cross(ac).squaredNorm() == 0) return closest_on_edges(p, a, b, c);
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  const double denom = va + vb + vc;
+  if (denom == 0) return closest_on_edges(p, a, b, c);
+  return a + ab * (vb / denom) + ac * (vc / denom);
+}
+
+void closest_between_segments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2, Vec3& on_1, Vec3& on_2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  const auto clamp01 = [](double t) { return t < 0 ? 0.0 : (t > 1 ? 1.0 : t); };
+  double s = 0, t = 0;
+  if (a == 0 && e == 0) {
+    on_1 = p1, on_2 = p2;
+    return;
+  }
+  if (a == 0) {
+    t = clamp01(f / e);
+  } else {
+    const double c = d1.dot(r);
+    if (e == 0) {
+      s = clamp01(-c / a);
+    } else {
+      const double b = d1.dot(d2), denominator = a * e - b * b;
+      // Parallel segments (denominator 0): any s will do; start from p1.
+      s = denominator > 0 ? clamp01((b * f - c * e) / denominator) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) t = 0, s = clamp01(-c / a);
+      else if (t > 1) t = 1, s = clamp01((b - c) / a);
+    }
+  }
+  on_1 = p1 + s * d1;
+  on_2 = p2 + t * d2;
+}
+
+Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal) {
+  const Vec3 projected = p - normal.dot(p - loop[0]) * normal;
+  bool inside = true;
+  for (int k = 0; k < count && inside; ++k) {
+    const Vec3& a = loop[k];
+    const Vec3& b = loop[(k + 1) % count];
+    // Counter-clockwise about the normal: inside is to the left of every edge.
+    inside = (b - a).cross(projected - a).dot(normal) >= 0;
+  }
+  if (inside) return projected;
+  Vec3 best = loop[0];
+  double best_sq = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < count; ++k) {
+    const Vec3 c = closest_on_segment(p, loop[k], loop[(k + 1) % count]);
+    const double d = (c - p).squaredNorm();
+    if (d < best_sq) best_sq = d, best = c;
+  }
+  return best;
+}
+
+}  // namespace mfz

@@ -1,0 +1,274 @@
+#include "geometry/hull.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+#include "geometry/qhull_facets.h"
+#include "geometry/tolerances.h"
+
+namespace mfz {
+namespace {
+
+double diameter_of(const std::vector<mfz_vec3>& vertices) {
+  double best = 0;
+  for (size_t i = 0; i < vertices.size(); ++i)
+    for (size_t j = i + 1; j < vertices.size(); ++j)
+      best = std::max(best, (to_vec(vertices[i]) - to_vec(vertices[j])).squaredNorm());
+  return std::sqrt(best);
+}
+
+// Thickness of the cloud: distance from the plane through a well-spread triangle
+// to the point farthest from it. Zero-volume clouds are refused before Qhull so
+// that the message says why, and the threshold is relative to the cloud's size.
+std::string flatness_error(const std::vector<Vec3>& points) {
+  size_t i0 = 0, i1 = 0;
+  double far = 0;
+  for (size_t i = 0; i < points.size(); ++i)
+    for (size_t j = i + 1; j < points.size(); ++j) {
+      const double d = (points[i] - points[j]).squaredNorm();
+      if (d > far) far = d, i0 = i, i1 = j;
+    }
+  const double size = std::sqrt(far);
+  if (size == 0) return "all points coincide";
+  const Vec3 axis = (points[i1] - points[i0]) / size;
+  size_t i2 = i0;
+  double off_line = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    const Vec3 d = points[i] - points[i0];
+    const double dist = (d - d.dot(axis) * axis).norm();
+    if (dist > off_line) off_line = dist, i2 = i;
+  }
+  if (off_line <= tol::kFlatHull * size) return "all points lie on a line";
+  const Vec3 plane_normal = axis.cross(points[i2] - points[i0]).normalized();
+  double thickness = 0;
+  for (const Vec3& p : points) thickness = std::max(thickness, std::abs(plane_normal.dot(p - points[i0])));
+  if (thickness <= tol::kFlatHull * size) {
+    std::ostringstream why;
+    why << "all points lie within " << thickness / size << " L of a plane: the hull has no volume";
+    return why.str();
+  }
+  return {};
+}
+
+// Most facets of a cloud are triangles: the sort below, without atan2. The
+// loop starts where the sort's would (at the vertex before loop[0], whose
+// angle is the only negative one), so both paths build the same hull.
+// False, and `loop` untouched, where a vertex lies on u's line (angle 0 or
+// pi): the sort then decides.
+bool order_triangle(std::vector<int>& loop, const std::vector<Vec3>& points, const Vec3& centroid, const Vec3& v) {
+  const double side_1 = (points[loop[1]] - centroid).dot(v), side_2 = (points[loop[2]] - centroid).dot(v);
+  if (side_1 == 0 || side_2 == 0 || (side_1 > 0) == (side_2 > 0)) return false;
+  const int first = loop[0], next = side_1 > 0 ? loop[1] : loop[2], before = side_1 > 0 ? loop[2] : loop[1];
+  loop = {before, first, next};
+  return true;
+}
+
+// Qhull gives each facet's vertices as an unordered set: order them
+// counter-clockwise about the outward normal by angle around their centroid
+// (a facet is convex, so the angular order is the loop).
+void order_counter_clockwise(std::vector<int>& loop, const std::vector<Vec3>& points, const Vec3& normal) {
+  Vec3 centroid = Vec3::Zero();
+  for (int id : loop) centroid += points[id];
+  centroid /= static_cast<double>(loop.size());
+  const Vec3 u = (points[loop[0]] - centroid).normalized();
+  const Vec3 v = normal.cross(u);
+  if (loop.size() == 3 && order_triangle(loop, points, centroid, v)) return;
+  std::vector<std::pair<double, int>> keyed;
+  for (int id : loop) {
+    const Vec3 d = points[id] - centroid;
+    keyed.emplace_back(std::atan2(d.dot(v), d.dot(u)), id);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  for (size_t k = 0; k < loop.size(); ++k) loop[k] = keyed[k].second;
+}
+
+// A vertex that lies on a straight stretch of a loop is not extreme (it sits on
+// an edge, or Qhull's merging left it inside a face): the contract lists
+// extreme points only, so it leaves every loop. Returns true when one was found.
+bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std::vector<Vec3>& points) {
+  std::vector<int> faces_of(points.size(), 0);
+  for (const auto& loop : loops)
+    for (int id : loop) ++faces_of[id];
+  for (auto& loop : loops) {
+    const size_t n = loop.size();
+    for (size_t k = 0; k < n; ++k) {
+      const int id = loop[k];
+      const Vec3 in = points[id] - points[loop[(k + n - 1) % n]];
+      const Vec3 out = points[loop[(k + 1) % n]] - points[id];
+      const bool straight = in.cross(out).norm() <= 1e-12 * in.norm() * out.norm() && in.dot(out) > 0;
+      if (faces_of[id] >= 3 && !straight) continue;
+      for (auto& other : loops) other.erase(std::remove(other.begin(), other.end(), id), other.end());
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+mfz_hull Hull::view() const {
+  return {vertex_count(), vertices_.data(), face_count(), face_offsets_.data(), face_vertices_.data(),
+          face_normals_.data()};
+}
+
+Hull Hull::scaled(double s) const {
+  Hull out = *this;
+  for (mfz_vec3& v : out.vertices_) v = to_abi(Vec3(s * to_vec(v)));
+  out.diameter_ = s * diameter_;
+  return out;
+}
+
+Hull Hull::renumbered() const {
+  const int last = vertex_count() - 1, faces = face_count();
+  Hull out;
+  out.vertices_.assign(vertices_.rbegin(), vertices_.rend());
+  out.face_normals_.assign(face_normals_.rbegin(), face_normals_.rend());
+  out.face_offsets_.push_back(0);
+  for (int f = faces - 1; f >= 0; --f) {
+    const int n = face_size(f);
+    for (int k = 1; k <= n; ++k) out.face_vertices_.push_back(last - face_vertex(f, k % n));
+    out.face_offsets_.push_back(static_cast<int32_t>(out.face_vertices_.size()));
+  }
+  for (const HullEdge& e : edges_)
+    out.edges_.push_back({last - e.v0, last - e.v1, faces - 1 - e.face_left, faces - 1 - e.face_right});
+  out.diameter_ = diameter_;
+  return out;
+}
+
+Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,
+                      std::vector<Vec3> normals) {
+  Hull hull;
+  size_t steps_total = 0;
+  for (const auto& loop : loops) steps_total += loop.size();
+  hull.vertices_.reserve(vertices.size());
+  hull.face_offsets_.reserve(loops.size() + 1);
+  hull.face_vertices_.reserve(steps_total);
+  hull.face_normals_.reserve(normals.size());
+  hull.edges_.reserve(steps_total / 2);
+  for (const Vec3& v : vertices) hull.vertices_.push_back(to_abi(v));
+  hull.face_offsets_.push_back(0);
+  for (const auto& loop : loops) {
+    hull.face_vertices_.insert(hull.face_vertices_.end(), loop.begin(), loop.end());
+    hull.face_offsets_.push_back(static_cast<int32_t>(hull.face_vertices_.size()));
+  }
+  for (const Vec3& n : normals) hull.face_normals_.push_back(to_abi(n));
+  // Pair the loop steps by their undirected key: sorting beats a map here,
+  // and every relation builds hulls. Edges keep the order of their first step.
+  struct Step {
+    long long key;
+    int order, from, to, face;
+  };
+  std::vector<Step> steps;
+  steps.reserve(steps_total);
+  const long long base = static_cast<long long>(hull.vertices_.size()) + 1;
+  for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
+    const auto& loop = loops[f];
+    for (size_t k = 0; k < loop.size(); ++k) {
+      const int a = loop[k], b = loop[(k + 1) % loop.size()];
+      steps.push_back({std::min(a, b) * base + std::max(a, b), static_cast<int>(steps.size()), a, b, f});
+    }
+  }
+  std::sort(steps.begin(), steps.end(),
+            [](const Step& x, const Step& y) { return x.key != y.key ? x.key < y.key : x.order < y.order; });
+  std::vector<std::pair<int, HullEdge>> first_seen;
+  first_seen.reserve(steps_total / 2);
+  for (size_t i = 0; i < steps.size();) {
+    size_t j = i;
+    while (j + 1 < steps.size() && steps[j + 1].key == steps[i].key) ++j;
+    first_seen.push_back({steps[i].order, {steps[i].from, steps[i].to, steps[i].face, j > i ? steps[j].face : -1}});
+    i = j + 1;
+  }
+  std::sort(first_seen.begin(), first_seen.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [order, edge] : first_seen) hull.edges_.push_back(edge);
+  hull.diameter_ = diameter_of(hull.vertices_);
+  return hull;
+}
+
+HullBuild build_hull(const std::vector<Vec3>& points) {
+  if (points.size() < 4) return {std::nullopt, "fewer than four points (" + std::to_string(points.size()) + ")"};
+  for (const Vec3& p : points)
+    if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
+  if (std::string why = flatness_error(points); !why.empty()) return {std::nullopt, why};
+
+  std::string qhull_error;
+  std::vector<QhullFacet> facets = qhull_facets(points, /*triangulate=*/false, qhull_error);
+  if (facets.empty()) return {std::nullopt, "qhull: " + qhull_error};
+
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  loops.reserve(facets.size());
+  normals.reserve(facets.size());
+  for (QhullFacet& facet : facets) {
+    loops.push_back(std::move(facet.point_ids));
+    normals.push_back(facet.normal.normalized());
+    order_counter_clockwise(loops.back(), points, normals.back());
+  }
+  while (drop_one_non_extreme_vertex(loops, points)) {
+  }
+
+  // Renumber the surviving points as the hull's vertices, in input order so
+  // that the numbering does not depend on Qhull's facet order.
+  std::vector<int> index_of(points.size(), -1);
+  for (const auto& loop : loops)
+    for (int id : loop) index_of[id] = 0;
+  std::vector<Vec3> vertices;
+  for (size_t i = 0; i < points.size(); ++i)
+    if (index_of[i] == 0) index_of[i] = static_cast<int>(vertices.size()), vertices.push_back(points[i]);
+  for (auto& loop : loops)
+    for (int& id : loop) id = index_of[id];
+
+  Hull hull = Hull::from_faces(std::move(vertices), std::move(loops), std::move(normals));
+  if (std::string why = validate_hull(hull); !why.empty()) return {std::nullopt, "invalid hull: " + why};
+  return {std::move(hull), {}};
+}
+
+std::string validate_hull(const Hull& hull) {
+  const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
+  if (v < 4 || f < 4) return "fewer than four vertices or faces";
+  // Every loop step from -> to once, and its reverse once: the sorted steps
+  // equal the sorted reversed steps, with no step repeated.
+  std::vector<long long> steps, reversed;
+  steps.reserve(2 * static_cast<size_t>(e));
+  reversed.reserve(2 * static_cast<size_t>(e));
+  for (int face = 0; face < f; ++face) {
+    const int n = hull.face_size(face);
+    if (n < 3) return "a face has fewer than three vertices";
+    for (int k = 0; k < n; ++k) {
+      const long long from = hull.face_vertex(face, k), to = hull.face_vertex(face, (k + 1) % n);
+      steps.push_back(from * v + to);
+      reversed.push_back(to * v + from);
+    }
+  }
+  std::sort(steps.begin(), steps.end());
+  std::sort(reversed.begin(), reversed.end());
+  for (size_t i = 0; i < steps.size(); ++i) {
+    const bool repeated = i + 1 < steps.size() && steps[i + 1] == steps[i];
+    if (repeated || steps[i] != reversed[i]) {
+      const long long odd = repeated || steps[i] < reversed[i] ? steps[i] : reversed[i];
+      return "edge " + std::to_string(odd / v) + "-" + std::to_string(odd % v) + " is not shared by exactly two faces";
+    }
+  }
+  // Every edge in two faces, checked first: an open surface is named as one.
+  if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
+  const double slack = tol::kHullConvexity * hull.diameter();
+  for (int face = 0; face < f; ++face) {
+    const Vec3 n = hull.face_normal(face);
+    if (std::abs(n.norm() - 1) > 1e-12) return "a face normal is not unit length";
+    const double offset = hull.face_offset(face);
+    Vec3 newell = Vec3::Zero();
+    for (int k = 0; k < hull.face_size(face); ++k) {
+      const Vec3 p = hull.vertex(hull.face_vertex(face, k));
+      if (std::abs(n.dot(p) - offset) > slack) return "a face is not planar";
+      newell += p.cross(hull.vertex(hull.face_vertex(face, (k + 1) % hull.face_size(face))));
+    }
+    if (newell.dot(n) <= 0) return "a face loop is not counter-clockwise seen from outside";
+    for (int i = 0; i < v; ++i)
+      if (n.dot(hull.vertex(i)) - offset > slack) return "the hull is not convex";
+  }
+  return {};
+}
+
+}  // namespace mfz

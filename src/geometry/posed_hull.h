@@ -1,0 +1,111 @@
+#pragma once
+/// \file
+/// A hull of the C ABI seen in world space through its pose, without copying:
+/// the generator's hot path reads local vertices and rotates on demand, so a
+/// call allocates nothing whatever the hull's size.
+#include <cmath>
+#include <limits>
+
+#include "manifuzz/abi.h"
+#include "geometry/tolerances.h"
+#include "geometry/vec.h"
+
+namespace mfz {
+
+/// The projection of a hull onto a world axis: [min, max] of `axis . x`.
+struct Interval {
+  double min = std::numeric_limits<double>::infinity();
+  double max = -std::numeric_limits<double>::infinity();
+};
+
+/// True when two unit face normals belong to one plane (tol::kCoplanarSine).
+inline bool coplanar_normals(const Vec3& n1, const Vec3& n2) {
+  return n1.dot(n2) > 0 && n1.cross(n2).norm() <= tol::kCoplanarSine;
+}
+
+/// World vertices are cached on the stack for hulls up to this size (larger
+/// hulls are rotated on demand), so SAT's projections are plain dot products.
+inline constexpr int kCachedVertices = 128;
+
+class PosedHull {
+ public:
+  PosedHull(const mfz_hull& hull, const Pose& pose)
+      : hull_(hull), pose_(pose), rotation_(pose.orientation.toRotationMatrix()),
+        cached_(hull.vertex_count <= kCachedVertices) {
+    if (cached_)
+      for (int i = 0; i < hull.vertex_count; ++i) world_[i] = rotation_ * local_vertex(i) + pose_.position;
+  }
+
+  int vertex_count() const { return hull_.vertex_count; }
+  int face_count() const { return hull_.face_count; }
+  int face_size(int f) const { return hull_.face_offsets[f + 1] - hull_.face_offsets[f]; }
+  int face_vertex(int f, int k) const { return hull_.face_vertices[hull_.face_offsets[f] + k]; }
+  Vec3 local_vertex(int i) const { return to_vec(hull_.vertices[i]); }
+  Vec3 world_vertex(int i) const { return cached_ ? world_[i] : Vec3(rotation_ * local_vertex(i) + pose_.position); }
+  Vec3 world_face_normal(int f) const { return rotation_ * to_vec(hull_.face_normals[f]); }
+  /// World position of the k-th vertex of face f's loop.
+  Vec3 world_face_point(int f, int k) const { return world_vertex(face_vertex(f, k)); }
+
+  /// Projection of the hull onto a world direction (need not be unit).
+  Interval project(const Vec3& world_axis) const {
+    if (cached_) {
+      Interval range;
+      for (int i = 0; i < hull_.vertex_count; ++i) {
+        const double d = world_axis.dot(world_[i]);
+        range.min = d < range.min ? d : range.min;
+        range.max = d > range.max ? d : range.max;
+      }
+      return range;
+    }
+    const Vec3 local_axis = rotation_.transpose() * world_axis;
+    Interval range;
+    for (int i = 0; i < hull_.vertex_count; ++i) {
+      const double d = local_axis.dot(local_vertex(i));
+      range.min = d < range.min ? d : range.min;
+      range.max = d > range.max ? d : range.max;
+    }
+    const double shift = world_axis.dot(pose_.position);
+    return {range.min + shift, range.max + shift};
+  }
+
+  /// Index of the vertex furthest along a world direction; the first of equals.
+  int support_vertex(const Vec3& world_direction) const {
+    const Vec3 local = rotation_.transpose() * world_direction;
+    int best = 0;
+    double best_d = -std::numeric_limits<double>::infinity();
+    for (int i = 0; i < hull_.vertex_count; ++i) {
+      const double d = local.dot(local_vertex(i));
+      if (d > best_d) best_d = d, best = i;
+    }
+    return best;
+  }
+
+  /// The face on the other side of the loop step v0 -> v1 of some face, or -1
+  /// (an open hull, which the harness never builds).
+  int face_across(int v0, int v1) const {
+    for (int f = 0; f < hull_.face_count; ++f) {
+      const int n = face_size(f);
+      for (int k = 0; k < n; ++k)
+        if (face_vertex(f, k) == v1 && face_vertex(f, (k + 1) % n) == v0) return f;
+    }
+    return -1;
+  }
+
+  /// True when the loop step v0 -> v1 of `face` lies between two coplanar
+  /// faces (a triangulated face's diagonal): no edge of the polyhedron, so it
+  /// spans no SAT axis (F4) and supports no edge contact (F22). Scans loops:
+  /// ask it only of an edge about to count.
+  bool is_flat_edge(int v0, int v1, int face) const {
+    const int other = face_across(v0, v1);
+    return other >= 0 && coplanar_normals(world_face_normal(other), world_face_normal(face));
+  }
+
+ private:
+  const mfz_hull& hull_;
+  const Pose& pose_;
+  Mat3 rotation_;
+  bool cached_;
+  Vec3 world_[kCachedVertices];
+};
+
+}  // namespace mfz

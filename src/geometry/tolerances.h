@@ -1,0 +1,88 @@
+#pragma once
+/// \file
+/// Every tolerance of the project, in one place. Lengths are relative to the
+/// case's scale L (the larger hull diameter, docs/contract.md); the harness turns
+/// them into lengths with `CaseScale::length`, which also adds the resolution
+/// of the world frame (see below). Unit vectors and angles use dimensionless
+/// tolerances.
+///
+/// Refinement of the contract, and why: a case placed 1e6 L from the origin
+/// cannot be represented better than one ulp of its coordinates, so every
+/// length tolerance is k * L + kWorldUlps * eps * M, where M is the largest
+/// absolute world coordinate of the case. For cases near the origin M <= L and
+/// the second term is below 1e-13 L, so the tolerance is the contract's k * L.
+
+#include <limits>
+
+namespace mfz::tol {
+
+/// Resolution of the world frame, in ulps of the largest coordinate: a rigid
+/// motion (a rotation of 9 products, a translation) and a dot product over
+/// world points each lose a few ulps; 64 covers the chain with room.
+inline constexpr double kWorldUlps = 64.0;
+/// The world frame's resolution at coordinates of size `magnitude`:
+/// kWorldUlps ulps of it.
+inline constexpr double world_rounding(double magnitude) {
+  return kWorldUlps * std::numeric_limits<double>::epsilon() * magnitude;
+}
+
+/// |depth| or gap below this (x L) is "touching": either colliding answer passes.
+inline constexpr double kTouching = 1e-9;
+/// Two SAT axes whose overlaps differ by less than this (x L) tie.
+inline constexpr double kTie = 1e-9;
+/// on-surface, pair-consistency, within-both-hulls (x L).
+inline constexpr double kPoint = 1e-9;
+/// depth-exact, normal-realises-depth, negative-penetration, has-contacts (x L).
+inline constexpr double kDepth = 1e-9;
+/// unit-normal: | |n| - 1 | (dimensionless).
+inline constexpr double kUnitNormal = 1e-9;
+
+/// libccd is run on the case rescaled to L = 1 with these absolute settings.
+inline constexpr double kCcdEpaTolerance = 1e-8;
+inline constexpr double kCcdMprTolerance = 1e-8;
+inline constexpr double kCcdDistTolerance = 1e-10;
+/// Bound on libccd's iterations: its default is unbounded and GJK has been seen
+/// to spin forever on fuzz input (docs/contract.md).
+inline constexpr unsigned long kCcdMaxIterations = 500;
+/// EPA's answers are only as good as its tolerance; comparisons against EPA
+/// use this (x L), two orders above kCcdEpaTolerance for its polytope error.
+inline constexpr double kEpa = 1e-6;
+/// normal-agrees-with-epa: angle between n and EPA's direction (radians).
+inline constexpr double kEpaAngle = 1e-3;
+/// separates: how far past (or short of) depth B is moved (x L). The test is
+/// made on the exact Minkowski difference, so this only has to exceed kDepth.
+inline constexpr double kSeparates = 1e-7;
+
+/// Hull building: a point within this (x L) of a plane through three others
+/// makes the cloud flat (no positive volume).
+inline constexpr double kFlatHull = 1e-9;
+/// Hull validation: every vertex below every face plane within this (x L).
+inline constexpr double kHullConvexity = 1e-9;
+
+/// Generator: two edges whose cross product is shorter than this fraction of
+/// the product of their lengths are parallel; their axis is a face normal's
+/// and is skipped (guarded normalisation).
+inline constexpr double kParallelEdges = 1e-9;
+
+/// Generator: two faces lie in one plane when the sine of the angle between
+/// their normals is at most this (and the normals point the same way). A
+/// patch of faces that far apart bends by at most 1e-11 of its size, below
+/// on-surface's tolerance (F7); a triangulated face's triangles share their
+/// normal exactly. A cosine test cannot say this: 1 - cos underflows.
+inline constexpr double kCoplanarSine = 1e-11;
+/// Generator: an edge-edge axis replaces the best face axis only when its
+/// overlap is smaller by more than this fraction of the hulls' extent along
+/// it, so that a tie (to rounding) keeps the face contact and its polygon.
+inline constexpr double kEdgeAxisBias = 1e-9;
+/// Generator: the Gauss-map test that prunes edge pairs (edge_arcs.h) drops
+/// a pair only when its sign products miss by more than this. They are
+/// products of dot products of unit normals, exact to about 1e-15, but a
+/// hull's stored normals may sit 1e-12 off its vertices' planes; near such a
+/// crossing the edge axis is within that angle of a face axis, which F3
+/// prefers anyway.
+inline constexpr double kGaussArcSlack = 1e-9;
+/// Generator: the supporting edges of an edge-edge axis make a contact only if
+/// their closest points lie along n to within this fraction of their lengths.
+inline constexpr double kEdgesCross = 1e-9;
+
+}  // namespace mfz::tol

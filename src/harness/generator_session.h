@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// Calls into a generator that may crash or hang. The built-in generator runs
+/// in process; a plugin runs in a worker process that the harness forks once
+/// and restarts after a crash or a hang (not a process per call: throughput
+/// matters). A crash or a hang is a finding, never a crash of the harness.
+#include <memory>
+#include <string>
+
+#include "harness/generator.h"
+
+namespace mfz {
+
+enum class CallOutcome { done, crashed, hung };
+
+class GeneratorSession {
+ public:
+  virtual ~GeneratorSession() = default;
+  virtual const std::string& name() const = 0;
+  /// Poisons `out` and calls the generator. On `done`, `status` is its return
+  /// value; on `crashed` or `hung`, `failure` says how (signal, time limit).
+  virtual CallOutcome generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,
+                               mfz_manifold& out, int32_t& status, std::string& failure) = 0;
+};
+
+/// `builtin` in process; anything else (a plugin path) in a worker process
+/// with `call_timeout_seconds` per call. nullptr and a one-line reason when
+/// the generator cannot be loaded.
+std::unique_ptr<GeneratorSession> open_session(const std::string& spec, double call_timeout_seconds,
+                                               std::string& error);
+
+/// An in-process session over an already opened generator.
+std::unique_ptr<GeneratorSession> in_process_session(Generator generator);
+
+}  // namespace mfz

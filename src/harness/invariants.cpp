@@ -1,0 +1,289 @@
+#include "harness/invariants.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "geometry/hull_distance.h"
+#include "oracles/exact_depth.h"
+#include "geometry/tolerances.h"
+
+namespace mfz {
+
+const char* status_name(CheckStatus status) {
+  switch (status) {
+    case CheckStatus::pass: return "pass";
+    case CheckStatus::fail: return "FAIL";
+    case CheckStatus::skipped: return "skipped";
+    case CheckStatus::oracle_disagreement: return "oracle disagreement";
+  }
+  return "?";
+}
+
+const std::vector<std::string>& invariant_names() {
+  static const std::vector<std::string> names = {
+      "finite",         "unit-normal",   "negative-penetration",    "pair-consistency",      "on-surface",
+      "within-both-hulls", "has-contacts", "agrees-with-gjk",       "depth-exact",           "depth-within-epa-bounds",
+      "normal-agrees-with-epa", "normal-realises-depth", "separates"};
+  return names;
+}
+
+const InvariantCheck* Verdict::first_violation() const {
+  for (const InvariantCheck& c : checks)
+    if (c.status == CheckStatus::fail) return &c;
+  return nullptr;
+}
+
+bool Verdict::has_oracle_disagreement() const {
+  return std::any_of(checks.begin(), checks.end(),
+                     [](const InvariantCheck& c) { return c.status == CheckStatus::oracle_disagreement; });
+}
+
+namespace {
+
+// What every check reads: the case, the oracles and the manifold in Eigen form.
+struct Context {
+  const Scene& scene;
+  const OracleAnswers& oracles;
+  const mfz_manifold& m;
+  double L;
+  Vec3 n;
+  double depth;  // -penetration
+  bool colliding;
+
+  double relative(double length) const { return length / L; }
+  Vec3 on_a(int i) const { return to_vec(m.contacts[i].point_on_a); }
+  Vec3 on_b(int i) const { return to_vec(m.contacts[i].point_on_b); }
+};
+
+InvariantCheck measured(const char* name, double error, double tolerance, std::string detail = {}) {
+  const bool ok = error <= tolerance;  // a NaN error fails
+  return {name, ok ? CheckStatus::pass : CheckStatus::fail, error, tolerance, std::move(detail)};
+}
+
+InvariantCheck skipped(const char* name, std::string why) { return {name, CheckStatus::skipped, 0, 0, std::move(why)}; }
+
+// printf-style, for the one-line details: a stream per check cost more than
+// the checks' arithmetic.
+template <class... Numbers>
+std::string text(const char* format, Numbers... numbers) {
+  char line[256];
+  std::snprintf(line, sizeof line, format, numbers...);
+  return line;
+}
+
+std::string describe(const char* what, int contact) {
+  return contact >= 0 ? text("%s (contact %d)", what, contact) : std::string(what);
+}
+
+// finite also covers fields out of range: a colliding flag other than 0 or 1,
+// a contact count outside 0..64. Both mean garbage came back.
+InvariantCheck check_finite(const Context& c) {
+  const mfz_manifold& m = c.m;
+  if (m.colliding != 0 && m.colliding != 1) return measured("finite", 1, 0, "colliding is " + std::to_string(m.colliding));
+  if (m.contact_count < 0 || m.contact_count > MFZ_MAX_CONTACTS)
+    return measured("finite", 1, 0, "contact_count is " + std::to_string(m.contact_count));
+  if (m.colliding == 1 && (!to_vec(m.normal).allFinite() || !std::isfinite(m.penetration)))
+    return measured("finite", 1, 0, "normal or penetration is not finite");
+  for (int i = 0; i < m.contact_count; ++i)
+    if (!c.on_a(i).allFinite() || !c.on_b(i).allFinite() || !std::isfinite(m.contacts[i].penetration))
+      return measured("finite", 1, 0, describe("a contact field is not finite", i));
+  return measured("finite", 0, 0);
+}
+
+InvariantCheck check_unit_normal(const Context& c) {
+  if (!c.colliding) return skipped("unit-normal", "not colliding");
+  return measured("unit-normal", std::abs(c.n.norm() - 1), tol::kUnitNormal);
+}
+
+// Touching cases may report p or p_i a rounding error above zero. Elsewhere
+// p_i < 0 is strict: a contact with p_i = 0 fails however small its error.
+InvariantCheck check_negative_penetration(const Context& c) {
+  if (!c.colliding) return skipped("negative-penetration", "not colliding");
+  const double tol = c.scene.length_tolerance(tol::kDepth);
+  const double ceiling = c.oracles.touching ? tol : 0;
+  double worst = std::max(0.0, c.m.penetration - ceiling);
+  bool broken = worst > 0;
+  int at = -1;
+  for (int i = 0; i < c.m.contact_count; ++i) {
+    const double p = c.m.contacts[i].penetration;
+    const bool not_negative = c.oracles.touching ? p > tol : p >= 0;
+    const double too_deep = (c.m.penetration - tol) - p;
+    if (not_negative || too_deep > 0) {
+      broken = true;
+      const double err = std::max(too_deep, p);
+      if (err >= worst) worst = err, at = i;
+    }
+  }
+  InvariantCheck check{"negative-penetration", broken ? CheckStatus::fail : CheckStatus::pass, c.relative(worst),
+                       c.relative(tol), describe("p <= 0 and p - tol <= p_i < 0", at)};
+  return check;
+}
+
+// The point checks: each contact's error (a length), the worst against
+// tol::kPoint, naming the contact that gave it.
+template <class ErrorOf>
+InvariantCheck worst_contact(const Context& c, const char* name, const char* what, ErrorOf&& error_of) {
+  if (c.m.contact_count == 0) return skipped(name, "no contacts");
+  double worst = 0;
+  int at = -1;
+  for (int i = 0; i < c.m.contact_count; ++i)
+    if (const double err = error_of(i); err > worst || std::isnan(err)) worst = err, at = i;
+  const double tol = c.scene.length_tolerance(tol::kPoint);
+  return measured(name, c.relative(worst), c.relative(tol), describe(what, at));
+}
+
+InvariantCheck check_pair_consistency(const Context& c) {
+  return worst_contact(c, "pair-consistency", "|b - (a + p_i n)|", [&](int i) {
+    return (c.on_b(i) - (c.on_a(i) + c.m.contacts[i].penetration * c.n)).norm();
+  });
+}
+
+InvariantCheck check_on_surface(const Context& c) {
+  const Scene& s = c.scene;
+  return worst_contact(c, "on-surface", "distance to own surface", [&](int i) {
+    return std::max(std::abs(signed_distance(s.hull_a, s.pose_a, c.on_a(i))),
+                    std::abs(signed_distance(s.hull_b, s.pose_b, c.on_b(i))));
+  });
+}
+
+// The error is how far a point sticks out beyond what is allowed, so that one
+// tolerance serves both the own-hull and the other-hull bound.
+InvariantCheck check_within_both_hulls(const Context& c) {
+  const Scene& s = c.scene;
+  return worst_contact(c, "within-both-hulls", "outside allowed by", [&](int i) {
+    const double slack = std::abs(c.m.contacts[i].penetration);
+    return std::max({signed_distance(s.hull_a, s.pose_a, c.on_a(i)), signed_distance(s.hull_b, s.pose_b, c.on_b(i)),
+                     signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
+                     signed_distance(s.hull_a, s.pose_a, c.on_b(i)) - slack, 0.0});
+  });
+}
+
+InvariantCheck check_has_contacts(const Context& c) {
+  const double tol = c.scene.length_tolerance(tol::kDepth);
+  if (!c.colliding || !(c.depth > tol)) return skipped("has-contacts", "not colliding deeper than tol");
+  return measured("has-contacts", c.m.contact_count >= 1 ? 0 : c.relative(c.depth), c.relative(tol),
+                  c.m.contact_count >= 1 ? "" : "colliding, no contacts");
+}
+
+InvariantCheck check_agrees_with_gjk(const Context& c) {
+  const OracleAnswers& o = c.oracles;
+  if (o.touching) return skipped("agrees-with-gjk", "touching: either answer passes");
+  if (o.ccd.gjk_intersecting != o.exact.colliding)
+    return {"agrees-with-gjk", CheckStatus::oracle_disagreement, 0, 0,
+            std::string("GJK says ") + (o.ccd.gjk_intersecting ? "intersecting" : "separate") +
+                ", the exact oracle says " + (o.exact.colliding ? "intersecting" : "separate")};
+  const bool agree = c.colliding == o.ccd.gjk_intersecting;
+  return measured("agrees-with-gjk", agree ? 0 : c.relative(std::abs(o.exact.signed_depth)),
+                  c.relative(c.scene.length_tolerance(tol::kTouching)),
+                  agree ? "" : (c.colliding ? "colliding, but GJK and the exact oracle say separate"
+                                            : "not colliding, but GJK and the exact oracle say intersecting"));
+}
+
+InvariantCheck check_depth_exact(const Context& c) {
+  if (!c.colliding) return skipped("depth-exact", "not colliding");
+  const double tol = c.scene.length_tolerance(tol::kDepth);
+  return measured("depth-exact", c.relative(std::abs(c.depth - c.oracles.exact.signed_depth)), c.relative(tol),
+                  text("depth %g, exact %g", c.depth, c.oracles.exact.signed_depth));
+}
+
+InvariantCheck check_depth_within_epa_bounds(const Context& c) {
+  const OracleAnswers& o = c.oracles;
+  if (!c.colliding || !o.ccd.epa_ok) return skipped("depth-within-epa-bounds", "not colliding, or EPA did not run");
+  const double tol_epa = c.scene.length_tolerance(tol::kEpa);
+  if (o.ccd.epa_depth > o.exact.signed_depth + tol_epa)
+    return {"depth-within-epa-bounds", CheckStatus::oracle_disagreement, c.relative(o.ccd.epa_depth - o.exact.signed_depth),
+            c.relative(tol_epa), "EPA's depth exceeds the exact depth"};
+  const double upper = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
+  const double err = std::max({0.0, o.ccd.epa_depth - c.depth, c.depth - upper});
+  return measured("depth-within-epa-bounds", c.relative(err), c.relative(tol_epa),
+                  text("EPA %g <= depth %g <= %g", o.ccd.epa_depth, c.depth, upper));
+}
+
+InvariantCheck check_normal_agrees_with_epa(const Context& c) {
+  const OracleAnswers& o = c.oracles;
+  const double tol_epa = c.scene.length_tolerance(tol::kEpa);
+  if (!c.colliding || !o.ccd.epa_ok || std::abs(o.ccd.epa_depth - o.exact.signed_depth) > tol_epa)
+    return skipped("normal-agrees-with-epa", "EPA's depth is not the exact depth");
+  // At zero depth every direction realises the depth, so EPA's is arbitrary.
+  if (o.touching) return skipped("normal-agrees-with-epa", "touching: EPA's direction is arbitrary");
+  const double angle = std::acos(std::clamp(c.n.normalized().dot(o.ccd.epa_direction), -1.0, 1.0));
+  if (angle <= tol::kEpaAngle) return measured("normal-agrees-with-epa", angle, tol::kEpaAngle, "angle to EPA (rad)");
+  // EPA's direction is only an oracle where it realises the exact depth
+  // itself: at small depths its depth can be right and its direction not.
+  const double along_epa = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
+  if (std::abs(along_epa - o.exact.signed_depth) > tol_epa) {
+    return {"normal-agrees-with-epa", CheckStatus::oracle_disagreement, c.relative(std::abs(along_epa - o.exact.signed_depth)),
+            c.relative(tol_epa),
+            text("EPA's direction does not realise the exact depth: overlap along it %g, exact depth %g", along_epa,
+                 o.exact.signed_depth)};
+  }
+  // A tie: both axes are minimal, EPA's and n, each realising the depth.
+  const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
+  const double err = std::max(std::abs(along_epa - c.depth), std::abs(along_n - c.depth));
+  return measured("normal-agrees-with-epa", c.relative(err), c.relative(tol_epa),
+                  text("angle to EPA %g rad; overlap along EPA's direction %g, along n %g, depth %g", angle, along_epa,
+                       along_n, c.depth));
+}
+
+InvariantCheck check_normal_realises_depth(const Context& c) {
+  if (!c.colliding) return skipped("normal-realises-depth", "not colliding");
+  const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
+  return measured("normal-realises-depth", c.relative(std::abs(along_n - c.depth)),
+                  c.relative(c.scene.length_tolerance(tol::kDepth)), text("overlap along n %g, depth %g", along_n, c.depth));
+}
+
+// Moving B by t keeps the hulls overlapping exactly when t lies in A - B, so
+// the exact test is a point-in-polytope test against the planes of A - B
+// (every candidate axis, both ways for edge pairs); GJK is asked too.
+InvariantCheck check_separates(const Context& c) {
+  const OracleAnswers& o = c.oracles;
+  if (!c.colliding) return skipped("separates", "not colliding");
+  const double tol = c.scene.length_tolerance(tol::kSeparates);
+  const Vec3 n = c.n.normalized();
+  const Vec3 beyond = (c.depth + tol) * n;
+  double err = std::max(0.0, depth_after_moving_b(o.sat_axes, beyond));
+  const char* what = "still overlapping after moving B by depth + tol";
+  bool exact_separates = err == 0;
+  bool gjk_disagrees = exact_separates && libccd_intersecting(c.scene, beyond);
+  if (exact_separates && c.depth > 2 * tol) {
+    const Vec3 short_of = (c.depth - tol) * n;
+    err = std::max(0.0, -depth_after_moving_b(o.sat_axes, short_of));
+    what = "already separate after moving B by depth - tol";
+    gjk_disagrees = err == 0 && !libccd_intersecting(c.scene, short_of);
+  }
+  if (err == 0 && gjk_disagrees)
+    return {"separates", CheckStatus::oracle_disagreement, 0, c.relative(tol),
+            "the exact test and GJK disagree at depth +- tol"};
+  return measured("separates", c.relative(err), 0.0, err > 0 ? what : "");
+}
+
+}  // namespace
+
+Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& m) {
+  Verdict v;
+  v.generator_status = status;
+  if (status != 0) return v;
+  const Context c{scene, oracles, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
+  v.checks.push_back(check_finite(c));
+  if (v.checks.back().status == CheckStatus::fail) {
+    for (size_t k = 1; k < invariant_names().size(); ++k)
+      v.checks.push_back(skipped(invariant_names()[k].c_str(), "output not finite"));
+    return v;
+  }
+  v.checks.push_back(check_unit_normal(c));
+  v.checks.push_back(check_negative_penetration(c));
+  v.checks.push_back(check_pair_consistency(c));
+  v.checks.push_back(check_on_surface(c));
+  v.checks.push_back(check_within_both_hulls(c));
+  v.checks.push_back(check_has_contacts(c));
+  v.checks.push_back(check_agrees_with_gjk(c));
+  v.checks.push_back(check_depth_exact(c));
+  v.checks.push_back(check_depth_within_epa_bounds(c));
+  v.checks.push_back(check_normal_agrees_with_epa(c));
+  v.checks.push_back(check_normal_realises_depth(c));
+  v.checks.push_back(check_separates(c));
+  return v;
+}
+
+}  // namespace mfz

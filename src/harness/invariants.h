@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// The contract's invariants, each a named check that measures its error and
+/// compares it with its tolerance. Errors and tolerances are reported in units
+/// of L (unit-normal: dimensionless), so a margin reads the same at any scale.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "manifuzz/abi.h"
+#include "oracles/oracle_answers.h"
+#include "case/scene.h"
+
+namespace mfz {
+
+enum class CheckStatus { pass, fail, skipped, oracle_disagreement };
+const char* status_name(CheckStatus status);
+
+struct InvariantCheck {
+  std::string name;  ///< the contract's name, e.g. "depth-exact"
+  CheckStatus status = CheckStatus::pass;
+  double error = 0;      ///< measured, in units of L
+  double tolerance = 0;  ///< in units of L
+  std::string detail;    ///< one line: what was measured, or why skipped
+};
+
+/// The invariant names, in the contract's order.
+const std::vector<std::string>& invariant_names();
+
+struct Verdict {
+  int32_t generator_status = 0;  ///< non-zero: the generator refused
+  std::vector<InvariantCheck> checks;
+  bool refused() const { return generator_status != 0; }
+  /// The first failed check, or nullptr.
+  const InvariantCheck* first_violation() const;
+  bool has_oracle_disagreement() const;
+};
+
+/// Checks `manifold` (what the generator returned with `status`) against
+/// every invariant. A refusal is reported by `refused()`, and its checks are
+/// skipped.
+Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& manifold);
+
+}  // namespace mfz
