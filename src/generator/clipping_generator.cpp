@@ -22,20 +22,38 @@ double furthest_slack(const PosedHull& hull, const Vec3& direction, double furth
   return tol::kTie * (furthest - nearest) + tol::world_rounding(std::abs(furthest));
 }
 
-// Faces that hold the support vertex, or with over_ties any vertex as far.
+// Faces that hold the support vertex, or with over_ties any vertex as far;
+// `visit(face, alignment, held)` also gets how many of those support vertices
+// the face holds. With over_ties the support can be an edge or a face, and a
+// significant face must hold all of it that any face holds: a face with only
+// one end of a supporting edge can lie wholly outside the reference prism
+// while the edge crosses it (F24).
 template <class Visit>
 void faces_at_support(const PosedHull& hull, const Vec3& direction, int support, bool over_ties, Visit&& visit) {
   const double furthest = direction.dot(hull.world_vertex(support));
   const double slack = over_ties ? furthest_slack(hull, direction, furthest) : -1;
   for (int f = 0; f < hull.face_count(); ++f) {
-    bool contains = false;
-    for (int k = 0; k < hull.face_size(f) && !contains; ++k) {
+    int held = 0;
+    bool contains_support = false;
+    for (int k = 0; k < hull.face_size(f); ++k) {
       const int v = hull.face_vertex(f, k);
-      contains = v == support || direction.dot(hull.world_vertex(v)) >= furthest - slack;
+      const bool at_support = v == support || direction.dot(hull.world_vertex(v)) >= furthest - slack;
+      held += at_support ? 1 : 0;
+      contains_support |= v == support;
     }
-    if (contains) visit(f, hull.world_face_normal(f).dot(direction));
+    if (held > 0 && (over_ties || contains_support)) visit(f, hull.world_face_normal(f).dot(direction), held);
   }
 }
+
+// A face beats another when it holds more of the support, then when it is
+// more parallel to the direction.
+struct FaceRank {
+  int held = 0;
+  double alignment = -std::numeric_limits<double>::infinity();
+  bool beats(const FaceRank& other) const {
+    return held != other.held ? held > other.held : alignment > other.alignment;
+  }
+};
 
 // Equal to rounding: two tied faces clip their shared edge from both ends.
 // Rounding is a few ulps of the coordinates the clip worked with (the
@@ -60,21 +78,23 @@ double largest_coordinate(const ClipPolygon& polygon) {
 int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties) {
   support = hull.support_vertex(direction);
   int best = -1;
-  double most_parallel = -std::numeric_limits<double>::infinity();
-  faces_at_support(hull, direction, support, over_ties, [&](int f, double alignment) {
-    if (alignment > most_parallel) most_parallel = alignment, best = f;
+  FaceRank best_rank;
+  faces_at_support(hull, direction, support, over_ties, [&](int f, double alignment, int held) {
+    const FaceRank rank{held, alignment};
+    if (rank.beats(best_rank)) best_rank = rank, best = f;
   });
   return best;
 }
 
 int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity) {
   const int support = hull.support_vertex(direction);
-  double most_parallel = -std::numeric_limits<double>::infinity();
-  faces_at_support(hull, direction, support, true,
-                   [&](int, double alignment) { most_parallel = std::max(most_parallel, alignment); });
+  FaceRank best;
+  faces_at_support(hull, direction, support, true, [&](int, double alignment, int held) {
+    if (const FaceRank rank{held, alignment}; rank.beats(best)) best = rank;
+  });
   int count = 0;
-  faces_at_support(hull, direction, support, true, [&](int f, double alignment) {
-    if (alignment >= most_parallel - tol::kTie && count < capacity) out[count++] = f;
+  faces_at_support(hull, direction, support, true, [&](int f, double alignment, int held) {
+    if (held == best.held && alignment >= best.alignment - tol::kTie && count < capacity) out[count++] = f;
   });
   return count;
 }
