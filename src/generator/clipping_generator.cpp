@@ -238,7 +238,8 @@ bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const C
 }
 
 ClippingSteps::ClippingSteps()
-    : face_polygon(coplanar_patch),
+    : incident_faces(tied_significant_faces),
+      face_polygon(coplanar_patch),
       reference_is_b(sat_face_is_reference),
       clip_to_sides(clip_to_reference_prism),
       edge_contact(closest_points_of_edges),
@@ -321,7 +322,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   int incident_faces[kMaxTiedFaces] = {incident.index};
   int tied = 1;
   if (steps.significant_face_over_ties)
-    tied = tied_significant_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
+    tied = steps.incident_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
   const double resolution = largest_coordinate(reference_polygon);
   const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
   const Plane reference_plane{reference.normal, reference.normal.dot(on_reference)};

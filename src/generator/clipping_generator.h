@@ -55,6 +55,9 @@ struct ClippingSteps {
   /// that a far frame rounds B's pose once instead of rounding every
   /// decision (which edge is deepest, which face ties) by eps M.
   bool frame_at_a = true;
+  /// F11: the incident faces to clip, all equally aligned (at most `capacity`
+  /// into `out`); the count is returned.
+  int (*incident_faces)(const PosedHull& hull, const Vec3& direction, int* out, int capacity);
   /// The world polygon of a significant face.
   void (*face_polygon)(const PosedHull& hull, int face, ClipPolygon& out);
   /// True when B's significant face is the reference face.

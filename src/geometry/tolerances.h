@@ -53,6 +53,32 @@ inline constexpr double kEpaAngle = 1e-3;
 /// made on the exact Minkowski difference, so this only has to exceed kDepth.
 inline constexpr double kSeparates = 1e-7;
 
+/// Ties (docs/contract.md): a vertex within this (x L) of a hull's extreme
+/// along the normal is part of its support, for the incident-face and
+/// supporting-edge ties.
+inline constexpr double kSupportWindow = 1e-8;
+/// Ties: incident faces whose alignments with the normal (cosines) differ by
+/// less than this are equally aligned.
+inline constexpr double kIncidentAlignment = 1e-8;
+
+/// spans-contact-region: the contact region is the part of the hulls'
+/// intersection that touched first, deeper than this fraction of the depth
+/// (B backed off along n by it): "as though the two objects were only
+/// touching", as the clipping method infers its manifold. The full
+/// intersection mixes in later, shallower parts (an edge lying 2e-3 rad off
+/// a face beyond the ridge it crosses, f21).
+inline constexpr double kRegionFirstTouch = 0.9;
+/// spans-contact-region: the region's centroid may lie outside the contacts
+/// by this many times the distance it moves between kRegionFirstTouch and
+/// half-way to touching, plus kPoint L. A region that grows about a point (a
+/// vertex, an edge) with depth drifts by about half its offset and passes; a
+/// flat contact's region does not drift, so its contacts must span it.
+inline constexpr double kRegionDrift = 4.0;
+/// spans-contact-region is checked only for a shallow contact, where the
+/// intersection is thin along n: the depth at most this fraction of the
+/// region's width (a body sunk deep into another has no contact plane).
+inline constexpr double kThinRegion = 0.25;
+
 /// Hull building: a point within this (x L) of a plane through three others
 /// makes the cloud flat (no positive volume).
 inline constexpr double kFlatHull = 1e-9;

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "geometry/hull_distance.h"
+#include "oracles/contact_region.h"
 #include "oracles/exact_depth.h"
 #include "geometry/tolerances.h"
 
@@ -24,7 +25,7 @@ const std::vector<std::string>& invariant_names() {
   static const std::vector<std::string> names = {
       "finite",         "unit-normal",   "negative-penetration",    "pair-consistency",      "on-surface",
       "within-both-hulls", "has-contacts", "agrees-with-gjk",       "depth-exact",           "depth-within-epa-bounds",
-      "normal-agrees-with-epa", "normal-realises-depth", "separates"};
+      "normal-agrees-with-epa", "normal-realises-depth", "separates", "spans-contact-region"};
   return names;
 }
 
@@ -258,6 +259,38 @@ InvariantCheck check_separates(const Context& c) {
   return measured("separates", c.relative(err), 0.0, err > 0 ? what : "");
 }
 
+// Completeness: where the region is well defined, the contacts projected
+// onto the contact plane enclose its centroid. The region is the part of the
+// hulls' intersection that touched first (oracles/contact_region.h). It is
+// well defined where a face axis is among the minimal candidates: two
+// crossing edges first touch at one point, which on-surface and the depth
+// checks already pin (f20, f21: an edge nearly along a face beyond a ridge).
+// The tolerance grows with how far the centroid drifts on the way to
+// touching (tolerances.h).
+InvariantCheck check_spans_contact_region(const Context& c) {
+  const char* name = "spans-contact-region";
+  const double tol = c.scene.length_tolerance(tol::kPoint);
+  const double depth = c.oracles.exact.signed_depth;
+  if (!c.colliding || !(depth > c.scene.length_tolerance(tol::kDepth)) || c.m.contact_count == 0)
+    return skipped(name, "not colliding deeper than tol, or no contacts");
+  if (!c.oracles.face_contact) return skipped(name, "the hulls first touch at crossing edges: a point");
+  const Vec3 n = c.n.normalized();
+  const double first = tol::kRegionFirstTouch, halfway = (1 + tol::kRegionFirstTouch) / 2;
+  const ContactRegion region = contact_region(c.scene, n, first * depth * n, tol);
+  if (region.empty || !(depth <= tol::kThinRegion * region.width))
+    return skipped(name, "not a shallow contact: the hulls' intersection is not thin along n");
+  const ContactRegion closer = contact_region(c.scene, n, halfway * depth * n, tol);
+  const double drift = closer.empty ? INFINITY : (region.centroid - closer.centroid).norm();
+  Vec3 u, v;
+  plane_basis(n, u, v);
+  std::vector<Eigen::Vector2d> contacts;
+  for (int i = 0; i < c.m.contact_count; ++i) contacts.emplace_back(u.dot(c.on_a(i)), v.dot(c.on_a(i)));
+  const double off = distance_to_convex_hull_2d(region.centroid, contacts);
+  return measured(name, c.relative(off), c.relative(tol + tol::kRegionDrift * drift),
+                  text("region's centroid %g outside the contacts' hull; region width %g, drift %g", off,
+                       region.width, drift));
+}
+
 }  // namespace
 
 Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& m) {
@@ -283,6 +316,25 @@ Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t
   v.checks.push_back(check_normal_agrees_with_epa(c));
   v.checks.push_back(check_normal_realises_depth(c));
   v.checks.push_back(check_separates(c));
+  v.checks.push_back(check_spans_contact_region(c));
+  return v;
+}
+
+Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& original, double depth_factor,
+                                   const mfz_manifold& m) {
+  OracleAnswers known;
+  known.exact = original.exact;
+  known.exact.signed_depth *= depth_factor;
+  known.touching = original.touching;
+  known.face_contact = original.face_contact;
+  Verdict v;
+  const Context c{scene, known, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
+  v.checks.push_back(check_finite(c));
+  if (v.checks.back().status == CheckStatus::fail) return v;
+  for (auto check : {check_unit_normal, check_negative_penetration, check_pair_consistency, check_on_surface,
+                     check_within_both_hulls, check_has_contacts, check_depth_exact, check_normal_realises_depth,
+                     check_spans_contact_region})
+    v.checks.push_back(check(c));
   return v;
 }
 

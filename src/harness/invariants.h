@@ -41,4 +41,11 @@ struct Verdict {
 /// skipped.
 Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& manifold);
 
+/// The invariants a relation's transformed run must pass as well: every check
+/// that needs no oracle of its own, against the original case's oracles (a
+/// motion, a renumbering or a swap keeps the exact depth; a scale multiplies
+/// it by `depth_factor`).
+Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& original, double depth_factor,
+                                   const mfz_manifold& m);
+
 }  // namespace mfz

@@ -165,4 +165,10 @@ bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   return false;
 }
 
+bool has_minimal_face_axis(const std::vector<RankedAxis>& ranked, double tie) {
+  for (size_t k = 0; k < ranked.size() && ranked[k].overlap - ranked[0].overlap <= tie; ++k)
+    if (ranked[k].kind != AxisKind::edge_edge && coplanar_normals(ranked[k].normal, ranked[0].normal)) return true;
+  return false;
+}
+
 }  // namespace mfz

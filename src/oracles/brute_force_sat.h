@@ -55,4 +55,8 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t);
 /// (docs/contract.md, "Ties").
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie);
 
+/// True when a face axis is among the candidates within `tie` of the least
+/// overlap along the best direction.
+bool has_minimal_face_axis(const std::vector<RankedAxis>& ranked, double tie);
+
 }  // namespace mfz

@@ -14,6 +14,8 @@ OracleAnswers consult_oracles(const Scene& s) {
   o.ccd = ask_libccd(s);
   o.touching = std::abs(o.exact.signed_depth) <= touching;
   o.axis_tie = has_axis_tie(o.sat_axes, s.length_tolerance(tol::kTie));
+  o.ties = classify_ties(s, o.sat_axes, s.length_tolerance(tol::kTie));
+  o.face_contact = has_minimal_face_axis(o.sat_axes, s.length_tolerance(tol::kTie));
   return o;
 }
 

@@ -10,6 +10,7 @@
 #include "oracles/brute_force_sat.h"
 #include "oracles/exact_depth.h"
 #include "oracles/libccd_oracle.h"
+#include "oracles/ties.h"
 
 namespace mfz {
 
@@ -20,6 +21,11 @@ struct OracleAnswers {
   LibccdAnswer ccd;
   bool touching = false;  ///< |exact depth or gap| within tol::kTouching
   bool axis_tie = false;  ///< two distinct minimal axes (tolerances.h kTie)
+  /// The contract's ties, classified (ties.h).
+  Ties ties;
+  /// A face axis is among the minimal candidates along the best direction:
+  /// the hulls first touch at a face, and the contact region is well defined.
+  bool face_contact = false;
 };
 
 OracleAnswers consult_oracles(const Scene& scene);

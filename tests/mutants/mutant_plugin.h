@@ -2,9 +2,12 @@
 // The frame of every deliberately broken generator: the built-in generator's
 // steps with one replaced (MUTANT_STEPS), or its output post-processed
 // (MUTANT_AFTER). Each mutant file defines a name and one of the two.
+#include <algorithm>
 #include <cmath>
 
+#include "generator/clip_polygon.h"
 #include "generator/clipping_generator.h"
+#include "geometry/tolerances.h"
 
 namespace mutant {
 /// The steps the mutant runs.

@@ -1,0 +1,144 @@
+#include "oracles/contact_region.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mfz {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+struct Planes {
+  std::vector<Vec3> normals;
+  std::vector<double> offsets;
+  bool contains(const Vec3& p, double slack) const {
+    for (size_t f = 0; f < normals.size(); ++f)
+      if (normals[f].dot(p) - offsets[f] > slack) return false;
+    return true;
+  }
+};
+
+Planes world_planes(const Hull& hull, const Pose& pose, const Vec3& shift) {
+  Planes planes;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    const Vec3 normal = pose.rotate(hull.face_normal(f));
+    planes.normals.push_back(normal);
+    planes.offsets.push_back(normal.dot(pose.to_world(hull.vertex(hull.face_vertex(f, 0))) + shift));
+  }
+  return planes;
+}
+
+// The corners of the intersection of two convex hulls lie among: each hull's
+// vertices inside the other, and each edge of one crossing a face plane of
+// the other at a point inside both.
+void add_corners(const Hull& hull, const std::vector<Vec3>& world, const Vec3& shift, const Planes& own,
+                 const Planes& other, double slack, std::vector<Vec3>& out) {
+  for (const Vec3& p : world)
+    if (other.contains(p + shift, slack)) out.push_back(p + shift);
+  for (const HullEdge& e : hull.edges()) {
+    const Vec3 p = world[e.v0] + shift, q = world[e.v1] + shift;
+    for (size_t f = 0; f < other.normals.size(); ++f) {
+      const double dp = other.normals[f].dot(p) - other.offsets[f];
+      const double dq = other.normals[f].dot(q) - other.offsets[f];
+      if ((dp > 0) == (dq > 0) || dp == dq) continue;
+      const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+      if (other.contains(x, slack) && own.contains(x, slack)) out.push_back(x);
+    }
+  }
+}
+
+double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+// Andrew's monotone chain; collinear points dropped.
+std::vector<Vec2> convex_hull_2d(std::vector<Vec2> p) {
+  std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  p.erase(std::unique(p.begin(), p.end()), p.end());
+  if (p.size() < 3) return p;
+  std::vector<Vec2> hull(2 * p.size());
+  size_t k = 0;
+  for (size_t i = 0; i < p.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  for (size_t i = p.size() - 1, lower = k + 1; i-- > 0;) {
+    while (k >= lower && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
+    hull[k++] = p[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+Vec2 area_centroid(const std::vector<Vec2>& poly) {
+  if (poly.size() == 1) return poly[0];
+  if (poly.size() == 2) return 0.5 * (poly[0] + poly[1]);
+  double area = 0;
+  Vec2 sum = Vec2::Zero();
+  const Vec2& o = poly[0];
+  for (size_t i = 1; i + 1 < poly.size(); ++i) {
+    const double a = cross(o, poly[i], poly[i + 1]);
+    area += a;
+    sum += a * ((poly[i] - o) + (poly[i + 1] - o)) / 3;  // about o: far out, the sum keeps its digits
+  }
+  if (!(area > 0)) {  // collinear to rounding: the middle of the extremes
+    Vec2 lo = poly[0], hi = poly[0];
+    for (const Vec2& q : poly) lo = lo.cwiseMin(q), hi = hi.cwiseMax(q);
+    return 0.5 * (lo + hi);
+  }
+  return o + sum / area;
+}
+
+double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+  const Vec2 ab = b - a;
+  const double len = ab.squaredNorm();
+  const double t = len > 0 ? std::clamp((p - a).dot(ab) / len, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
+}  // namespace
+
+void plane_basis(const Vec3& n, Vec3& u, Vec3& v) {
+  const Vec3 helper = std::abs(n.x()) < 0.6 ? Vec3::UnitX() : (std::abs(n.y()) < 0.6 ? Vec3::UnitY() : Vec3::UnitZ());
+  u = n.cross(helper).normalized();
+  v = n.cross(u);
+}
+
+double distance_to_convex_hull_2d(const Vec2& p, std::vector<Vec2> points) {
+  if (points.empty()) return INFINITY;
+  const std::vector<Vec2> hull = convex_hull_2d(std::move(points));
+  if (hull.size() == 1) return (p - hull[0]).norm();
+  bool inside = hull.size() >= 3;
+  double nearest = INFINITY;
+  for (size_t i = 0; i < hull.size(); ++i) {
+    const Vec2& a = hull[i];
+    const Vec2& b = hull[(i + 1) % hull.size()];
+    if (cross(a, b, p) < 0) inside = false;
+    nearest = std::min(nearest, segment_distance(p, a, b));
+    if (hull.size() == 2) break;
+  }
+  return inside ? 0.0 : nearest;
+}
+
+ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b, double slack) {
+  const Planes planes_a = world_planes(s.hull_a, s.pose_a, Vec3::Zero());
+  const Planes planes_b = world_planes(s.hull_b, s.pose_b, shift_b);
+  std::vector<Vec3> corners;
+  add_corners(s.hull_a, s.world_a, Vec3::Zero(), planes_a, planes_b, slack, corners);
+  add_corners(s.hull_b, s.world_b, shift_b, planes_b, planes_a, slack, corners);
+  ContactRegion region;
+  if (corners.empty()) return region;
+  Vec3 u, v;
+  plane_basis(n, u, v);
+  std::vector<Vec2> projected;
+  for (const Vec3& c : corners) projected.emplace_back(u.dot(c), v.dot(c));
+  region.corners = convex_hull_2d(projected);
+  region.empty = false;
+  region.centroid = area_centroid(region.corners);
+  for (size_t i = 0; i < region.corners.size(); ++i)
+    for (size_t j = i + 1; j < region.corners.size(); ++j)
+      region.width = std::max(region.width, (region.corners[i] - region.corners[j]).norm());
+  return region;
+}
+
+}  // namespace mfz

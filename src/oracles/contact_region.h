@@ -1,0 +1,36 @@
+#pragma once
+/// \file
+/// The contact region of two overlapping hulls, from the hulls alone: their
+/// intersection, projected onto the contact plane (perpendicular to n). The
+/// completeness invariant (spans-contact-region) asks that a manifold's
+/// contacts enclose its centroid. Nothing here uses the generator's method.
+#include <vector>
+
+#include "case/scene.h"
+
+namespace mfz {
+
+struct ContactRegion {
+  bool empty = true;
+  /// Area centroid of the projected intersection (the middle of a segment,
+  /// the point itself), on the plane through the origin perpendicular to n,
+  /// in the plane's coordinates (u, v).
+  Eigen::Vector2d centroid = Eigen::Vector2d::Zero();
+  /// Greatest distance between two points of the projected region.
+  double width = 0;
+  /// The projected region's corners, counter-clockwise.
+  std::vector<Eigen::Vector2d> corners;
+};
+
+/// A basis (u, v) of the plane perpendicular to unit `n`.
+void plane_basis(const Vec3& n, Vec3& u, Vec3& v);
+
+/// The intersection of A and B (B moved by `shift_b`), projected onto the
+/// plane perpendicular to unit `n`. `slack` (a length) keeps points on a
+/// boundary within rounding.
+ContactRegion contact_region(const Scene& scene, const Vec3& n, const Vec3& shift_b, double slack);
+
+/// The distance from point `p` to the convex hull of `points` (0 inside).
+double distance_to_convex_hull_2d(const Eigen::Vector2d& p, std::vector<Eigen::Vector2d> points);
+
+}  // namespace mfz
