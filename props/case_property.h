@@ -1,11 +1,15 @@
 #pragma once
 /// \file
-/// The property every case must satisfy: the generator's manifold passes every
-/// invariant, and every metamorphic relation holds. One function, called by
-/// the RapidCheck properties, by `manifuzz check` and by the fuzz target.
+/// The one pipeline every case goes through, whichever command asks (`check`,
+/// `replay`, `explain`, the regression test, the properties): call the
+/// generator (a plugin in its worker, with the call limit), consult the
+/// oracles, check every invariant, then the metamorphic relations, or only
+/// the one a relation finding's case file names, with its recorded
+/// parameters, so that the finding replays exactly.
 #include <optional>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "case/case_file.h"
 #include "harness/generator_session.h"
@@ -18,6 +22,9 @@ namespace mfz::props {
 struct Finding {
   std::string name;
   std::string detail;
+  /// For a relation finding: the case file line that reproduces it
+  /// (`relation NAME numbers...`); empty otherwise.
+  std::string relation_line;
 };
 
 /// What a run covered, for the statistics.
@@ -26,24 +33,41 @@ struct CaseTags {
   int contact_count = 0;
   bool touching = false;
   bool tie = false;
+  double depth_over_l = 0;  ///< the exact depth in units of L (negative: the gap)
 };
+
+/// How much a relation asks (docs/contract.md, "Ties"): `contract` compares
+/// what the geometry determines; `strict` asks for one canonical answer even
+/// in a tie, and adds the triangulated-faces relation.
+enum class Level { contract, strict };
 
 struct CaseOutcome {
   bool invalid = false;  ///< not a valid input (degenerate hull): discarded, not a finding
   std::string invalid_reason;
   std::optional<Finding> finding;
   CaseTags tags;
+  /// The original call, when it returned: the manifold and its verdict.
+  std::optional<mfz_manifold> manifold;
+  std::optional<Verdict> verdict;
+  double scale = 0;  ///< L
 };
 
-/// Which checks count; empty means all invariants and all relations.
+/// Which checks count (empty: all invariants and relations), and how strictly.
 struct Selection {
   std::set<std::string> names;
+  Level level = Level::contract;
   bool wants(const std::string& name) const { return names.empty() || names.count(name) > 0; }
 };
 
 /// The metamorphic relations' names.
 const std::vector<std::string>& relation_names();
 
+/// The one pipeline. A case file's `level strict` line raises the level; its
+/// `relation` line restricts the relations to that one, with its parameters.
 CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Selection& selection = {});
+
+/// The extension lines that make a finding replay: the relation line, and
+/// `level strict` when the finding was made at the strict level.
+std::vector<std::string> replay_lines(const Finding& f, Level level);
 
 }  // namespace mfz::props

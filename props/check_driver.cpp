@@ -87,8 +87,11 @@ std::string write_case(const CheckOptions& options, const GeneratedCase& g, cons
                        std::string& text, std::string& error) {
   CaseFile file = g.file;
   file.extensions.push_back("note found by: manifuzz check --generator " + options.generator + " --seed " +
-                            std::to_string(options.seed) + " (case " + std::to_string(index) + ", then shrunk)");
+                            std::to_string(options.seed) +
+                            (options.selection.level == Level::strict ? " --strict" : "") + " (case " +
+                            std::to_string(index) + ", then shrunk)");
   file.extensions.push_back("note violation: " + f.name + ": " + f.detail);
+  for (const std::string& line : replay_lines(f, options.selection.level)) file.extensions.push_back(line);
   text = format_case(file);
   std::error_code ec;
   std::filesystem::create_directories(options.out_dir, ec);
@@ -103,7 +106,8 @@ std::string write_case(const CheckOptions& options, const GeneratedCase& g, cons
 std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error) {
   auto generator = open_session(options.generator, options.call_timeout, error);
   if (!generator) return std::nullopt;
-  log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << " (replay with --seed "
+  log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << ", "
+      << (options.selection.level == Level::strict ? "strict" : "contract") << " level (replay with --seed "
       << options.seed << ")\n";
   const auto gen = any_case();
   rc::Random random(options.seed);

@@ -36,19 +36,31 @@ GeneratorSession& generator_under_test() {
   return *session;
 }
 
-void save_failure(const std::string& name, const GeneratedCase& c) {
+// The built-in generator is held to the strict level (one canonical answer
+// even in a tie); a plugin named by MANIFUZZ_GENERATOR to the contract's,
+// unless MANIFUZZ_LEVEL=strict.
+Level level_under_test() {
+  const char* spec = std::getenv("MANIFUZZ_GENERATOR");
+  const char* level = std::getenv("MANIFUZZ_LEVEL");
+  if (level && std::string(level) == "strict") return Level::strict;
+  return spec && *spec ? Level::contract : Level::strict;
+}
+
+void save_failure(const std::string& name, const GeneratedCase& c, const Finding& f) {
   std::filesystem::create_directories("failures");
+  CaseFile file = c.file;
+  for (const std::string& line : replay_lines(f, level_under_test())) file.extensions.push_back(line);
   std::string error;
-  write_case_file("failures/" + name + ".case", c.file, error);
+  write_case_file("failures/" + name + ".case", file, error);
 }
 
 // The whole property for one invariant or relation `name`.
 void holds(const std::string& name, const GeneratedCase& c) {
-  const CaseOutcome outcome = check_case(c.file, generator_under_test(), Selection{{name}});
+  const CaseOutcome outcome = check_case(c.file, generator_under_test(), Selection{{name}, level_under_test()});
   RC_PRE(!outcome.invalid);
   RC_TAG(c.placement, outcome.tags.contact_kind);
   if (outcome.finding) {
-    save_failure(name, c);
+    save_failure(name, c, *outcome.finding);
     RC_FAIL(outcome.finding->name + ": " + outcome.finding->detail + " (case written to failures/" + name + ".case)");
   }
 }
@@ -79,6 +91,10 @@ RC_GTEST_PROP(Manifold, hasANormalAlongWhichTheOverlapIsTheDepth, (const Generat
 }
 RC_GTEST_PROP(Manifold, separatesTheHullsWhenBMovesByTheDepthAlongTheNormal, (const GeneratedCase& c)) {
   holds("separates", c);
+}
+
+RC_GTEST_PROP(Manifold, spansTheRegionWhereTheHullsFirstTouched, (const GeneratedCase& c)) {
+  holds("spans-contact-region", c);
 }
 
 RC_GTEST_PROP(Relation, swappingAAndBFlipsTheNormalAndSwapsThePoints, (const GeneratedCase& c)) {

@@ -1,9 +1,13 @@
 #include "relations.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <sstream>
 #include <cstring>
 #include <limits>
 
+#include "case/case_file.h"
 #include "geometry/closest_point.h"
 #include "geometry/tolerances.h"
 
@@ -30,7 +34,7 @@ struct Posed {
   Pose pose_b;
 };
 
-std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& out, const std::string& relation) {
+std::optional<Finding> call(GeneratorSession& g, const Posed& p, mfz_manifold& out, const std::string& relation) {
   const mfz_hull a = p.a->view(), b = p.b->view();
   const mfz_pose pa = p.pose_a.to_abi(), pb = p.pose_b.to_abi();
   int32_t status = 0;
@@ -41,6 +45,22 @@ std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& ou
     case CallOutcome::done: break;
   }
   if (status != 0) return Finding{"refused", "status " + std::to_string(status) + " in the " + relation + " run"};
+  return std::nullopt;
+}
+
+// Calls the generator on the transformed case, then holds its manifold to the
+// invariants too: in a tie the relation compares less, so each run must be
+// right on its own (docs/contract.md, "Ties").
+std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& out, const RelationInput& in,
+                           const std::string& relation, double depth_factor = 1) {
+  if (auto f = call(g, p, out, relation)) return f;
+  const Scene scene = posed_scene(*p.a, p.pose_a, *p.b, p.pose_b);
+  const Verdict v = check_transformed_manifold(scene, in.oracles, depth_factor, out);
+  if (const InvariantCheck* bad = v.first_violation()) {
+    char margin[96];
+    std::snprintf(margin, sizeof margin, " (error %.3g L, tol %.3g L)", bad->error, bad->tolerance);
+    return Finding{relation, "the " + relation + " run fails " + bad->name + ": " + bad->detail + margin};
+  }
   return std::nullopt;
 }
 
@@ -103,16 +123,8 @@ struct Tolerances {
   double depth, point, normal;
 };
 
-std::optional<std::string> compare(const Answer& original, const Answer& other, const RelationInput& in,
-                                   const Tolerances& tol) {
-  if (in.touching) return std::nullopt;  // either answer passes; nothing to compare
-  if (original.colliding != other.colliding)
-    return std::string("colliding ") + (original.colliding ? "1" : "0") + " vs " + (other.colliding ? "1" : "0");
-  if (!original.colliding) return std::nullopt;
-  if (!(std::abs(original.depth - other.depth) <= tol.depth))
-    return "depth " + std::to_string(original.depth) + " vs " + std::to_string(other.depth);
-  if (in.tie) return std::nullopt;
-  if (!((original.normal - other.normal).norm() <= tol.normal)) return std::string("the normals differ");
+// Contact sets, region against region both ways (see within_region).
+std::optional<std::string> compare_contacts(const Answer& original, const Answer& other, const Tolerances& tol) {
   const int n1 = static_cast<int>(original.contacts.size()), n2 = static_cast<int>(other.contacts.size());
   if (n1 > kComparedContacts && n2 > kComparedContacts) return std::nullopt;
   if (n1 > 8 || n2 > 8) return std::nullopt;  // a region of many points is not compared
@@ -121,6 +133,41 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
       !within_region(other.contacts, original.contacts, tol.point, tol.depth, why))
     return why;
   return std::nullopt;
+}
+
+// Two candidates along one direction from different features: a single
+// contact must lie in the region of the other answer's contacts.
+std::optional<std::string> single_contact_in_region(const Answer& x, const Answer& y, const Tolerances& tol) {
+  for (const auto* pair : {&x, &y}) {
+    const Answer& one = *pair;
+    const Answer& many = pair == &x ? y : x;
+    if (one.contacts.size() != 1 || many.contacts.size() < 2) continue;
+    std::string why;
+    if (!within_region(one.contacts, many.contacts, tol.point, tol.depth, why)) return "a single contact: " + why;
+  }
+  return std::nullopt;
+}
+
+// What the geometry determines is compared (docs/contract.md, "Ties"). At the
+// contract level: depth always; the normal unless another direction ties;
+// the contact set unless a feature, incident-face or supporting-edge tie
+// leaves it open. At the strict level the answer must be canonical: the
+// normal and contacts are compared unless another minimal axis exists.
+std::optional<std::string> compare(const Answer& original, const Answer& other, const RelationInput& in,
+                                   const Tolerances& tol) {
+  if (in.oracles.touching) return std::nullopt;  // either answer passes; nothing to compare
+  if (original.colliding != other.colliding)
+    return std::string("colliding ") + (original.colliding ? "1" : "0") + " vs " + (other.colliding ? "1" : "0");
+  if (!original.colliding) return std::nullopt;
+  if (!(std::abs(original.depth - other.depth) <= tol.depth))
+    return "depth " + std::to_string(original.depth) + " vs " + std::to_string(other.depth);
+  const Ties& ties = in.oracles.ties;
+  const bool strict = in.level == Level::strict;
+  if (strict ? in.oracles.axis_tie : ties.direction) return std::nullopt;
+  if (!((original.normal - other.normal).norm() <= tol.normal)) return std::string("the normals differ");
+  if (!strict && ties.contacts_open())
+    return ties.feature ? single_contact_in_region(original, other, tol) : std::nullopt;
+  return compare_contacts(original, other, tol);
 }
 
 // ---- the transformed cases ----
@@ -180,108 +227,189 @@ bool identical(const mfz_manifold& x, const mfz_manifold& y) {
   return true;
 }
 
-std::optional<Finding> deterministic(const RelationInput& in, GeneratorSession& g) {
+// Each relation takes its parameters from the case file when it names them
+// (a relation finding replays exactly), else derives them from the case, and
+// writes the ones it used into its finding (`relation NAME numbers...`).
+using Numbers = std::vector<double>;
+
+Numbers given_or(const Numbers* given, Numbers defaults) {
+  return given && given->size() == defaults.size() ? *given : defaults;
+}
+
+std::optional<Finding> recorded(std::optional<Finding> f, const std::string& relation, const Numbers& used) {
+  if (f) {
+    f->relation_line = "relation " + relation;
+    for (const double x : used) f->relation_line += " " + format_double(x);
+  }
+  return f;
+}
+
+std::optional<Finding> deterministic(const RelationInput& in, GeneratorSession& g, const Numbers*) {
   mfz_manifold again;
-  if (auto f = run(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, in.scene.pose_b}, again, "deterministic"))
-    return f;
-  if (!identical(in.manifold, again)) return Finding{"deterministic", "a second call gave different bits"};
+  if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, in.scene.pose_b}, again, "deterministic"))
+    return recorded(f, "deterministic", {});
+  if (!identical(in.manifold, again)) return recorded(Finding{"deterministic", "a second call gave different bits"}, "deterministic", {});
   return std::nullopt;
 }
 
-std::optional<Finding> swap_symmetry(const RelationInput& in, GeneratorSession& g) {
+std::optional<Finding> swap_symmetry(const RelationInput& in, GeneratorSession& g, const Numbers*) {
   mfz_manifold swapped;
-  if (auto f = run(g, {&in.scene.hull_b, in.scene.pose_b, &in.scene.hull_a, in.scene.pose_a}, swapped, "swap-symmetry"))
-    return f;
+  if (auto f = run(g, {&in.scene.hull_b, in.scene.pose_b, &in.scene.hull_a, in.scene.pose_a}, swapped, in, "swap-symmetry"))
+    return recorded(f, "swap-symmetry", {});
   Answer back = answer_of(swapped);
   back.normal = -back.normal;
   for (Contact& c : back.contacts) std::swap(c.on_a, c.on_b);
-  return finding_if("swap-symmetry", compare(answer_of(in.manifold), back, in, tolerances_for(in.scene)));
+  return recorded(finding_if("swap-symmetry", compare(answer_of(in.manifold), back, in, tolerances_for(in.scene))),
+                  "swap-symmetry", {});
 }
 
-std::optional<Finding> rigid_motion(const RelationInput& in, GeneratorSession& g) {
-  const Motion m{Quat(Eigen::AngleAxisd(0.9, Vec3(1, 2, 3).normalized())), in.scene.scale * Vec3(0.7, -0.3, 0.2)};
+Motion motion_of(const Numbers& x) { return {Quat(x[0], x[1], x[2], x[3]), Vec3(x[4], x[5], x[6])}; }
+
+// One rigid motion of both poses: a turn about a skew axis and a shift of about one L.
+std::optional<Finding> rigid_motion(const RelationInput& in, GeneratorSession& g, const Numbers* given) {
+  const Quat turn(Eigen::AngleAxisd(0.9, Vec3(1, 2, 3).normalized()));
+  const Vec3 shift = in.scene.scale * Vec3(0.7, -0.3, 0.2);
+  const Numbers used = given_or(given, {turn.w(), turn.x(), turn.y(), turn.z(), shift.x(), shift.y(), shift.z()});
+  const Motion m = motion_of(used);
   mfz_manifold out;
   if (auto f = run(g, {&in.scene.hull_a, m.apply(in.scene.pose_a), &in.scene.hull_b, m.apply(in.scene.pose_b)}, out,
-                   "rigid-motion"))
-    return f;
-  return finding_if("rigid-motion",
-                    compare(answer_of(in.manifold), moved_back(answer_of(out), m), in, tolerances_for(in.scene, in.scene.scale)));
+                   in, "rigid-motion"))
+    return recorded(f, "rigid-motion", used);
+  return recorded(finding_if("rigid-motion", compare(answer_of(in.manifold), moved_back(answer_of(out), m), in,
+                                                     tolerances_for(in.scene, m.shift.cwiseAbs().maxCoeff()))),
+                  "rigid-motion", used);
 }
 
-std::optional<Finding> far_from_origin(const RelationInput& in, GeneratorSession& g) {
-  const Motion m{Quat::Identity(), 1e4 * in.scene.scale * Vec3(0.6, -0.8, 0.3)};
+std::optional<Finding> far_from_origin(const RelationInput& in, GeneratorSession& g, const Numbers* given) {
+  const Vec3 shift = 1e4 * in.scene.scale * Vec3(0.6, -0.8, 0.3);
+  const Numbers used = given_or(given, {shift.x(), shift.y(), shift.z()});
+  const Motion m{Quat::Identity(), Vec3(used[0], used[1], used[2])};
   mfz_manifold out;
   if (auto f = run(g, {&in.scene.hull_a, m.apply(in.scene.pose_a), &in.scene.hull_b, m.apply(in.scene.pose_b)}, out,
-                   "far-from-origin"))
-    return f;
-  return finding_if("far-from-origin", compare(answer_of(in.manifold), moved_back(answer_of(out), m), in,
-                                               tolerances_for(in.scene, m.shift.cwiseAbs().maxCoeff())));
+                   in, "far-from-origin"))
+    return recorded(f, "far-from-origin", used);
+  return recorded(finding_if("far-from-origin", compare(answer_of(in.manifold), moved_back(answer_of(out), m), in,
+                                                        tolerances_for(in.scene, m.shift.cwiseAbs().maxCoeff()))),
+                  "far-from-origin", used);
 }
 
-std::optional<Finding> scale(const RelationInput& in, GeneratorSession& g) {
-  const double s = 2;  // a power of two: the scaled input is exact
+std::optional<Finding> scale(const RelationInput& in, GeneratorSession& g, const Numbers* given) {
+  const Numbers used = given_or(given, {2});  // a power of two: the scaled input is exact
+  const double s = used[0];
+  if (!(s > 0) || !std::isfinite(s)) return Finding{"scale", "the recorded factor is not a positive number"};
   const Hull a = in.scene.hull_a.scaled(s), b = in.scene.hull_b.scaled(s);
   Pose pa = in.scene.pose_a, pb = in.scene.pose_b;
   pa.position *= s;
   pb.position *= s;
   mfz_manifold out;
-  if (auto f = run(g, {&a, pa, &b, pb}, out, "scale")) return f;
+  if (auto f = run(g, {&a, pa, &b, pb}, out, in, "scale", s)) return recorded(f, "scale", used);
   Answer back = answer_of(out);
   back.depth /= s;
   for (Contact& c : back.contacts) c.on_a /= s, c.on_b /= s, c.penetration /= s;
-  return finding_if("scale", compare(answer_of(in.manifold), back, in, tolerances_for(in.scene)));
+  return recorded(finding_if("scale", compare(answer_of(in.manifold), back, in, tolerances_for(in.scene))), "scale",
+                  used);
 }
 
-std::optional<Finding> vertex_order(const RelationInput& in, GeneratorSession& g) {
+// The permutation is fixed: every vertex numbered backwards, the faces in
+// reverse order, each loop starting one vertex later (Hull::renumbered).
+std::optional<Finding> vertex_order(const RelationInput& in, GeneratorSession& g, const Numbers*) {
   const Hull a = in.scene.hull_a.renumbered(), b = in.scene.hull_b.renumbered();
   mfz_manifold out;
-  if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, "vertex-order")) return f;
-  return finding_if("vertex-order", compare(answer_of(in.manifold), answer_of(out), in, tolerances_for(in.scene)));
+  if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, in, "vertex-order"))
+    return recorded(f, "vertex-order", {});
+  return recorded(finding_if("vertex-order", compare(answer_of(in.manifold), answer_of(out), in, tolerances_for(in.scene))),
+                  "vertex-order", {});
 }
 
-std::optional<Finding> triangulated_faces(const RelationInput& in, GeneratorSession& g) {
+// Strict level only: the triangulated hull is outside the contract's hull
+// definition (its faces are not maximal).
+std::optional<Finding> triangulated_faces(const RelationInput& in, GeneratorSession& g, const Numbers*) {
+  if (in.level != Level::strict) return std::nullopt;
   const Hull a = triangulated(in.scene.hull_a), b = triangulated(in.scene.hull_b);
   mfz_manifold out;
-  if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, "triangulated-faces")) return f;
-  return finding_if("triangulated-faces", compare(answer_of(in.manifold), answer_of(out), in, tolerances_for(in.scene)));
+  if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, in, "triangulated-faces"))
+    return recorded(f, "triangulated-faces", {});
+  return recorded(
+      finding_if("triangulated-faces", compare(answer_of(in.manifold), answer_of(out), in, tolerances_for(in.scene))),
+      "triangulated-faces", {});
 }
 
 // Moving B by 0.99 of the depth along n keeps contact; by 1.01 separates.
-std::optional<Finding> move_along_normal(const RelationInput& in, GeneratorSession& g) {
+std::optional<Finding> move_along_normal(const RelationInput& in, GeneratorSession& g, const Numbers* given) {
   const mfz_manifold& m = in.manifold;
   const double depth = -m.penetration;
   if (m.colliding != 1 || !(depth > 1e3 * tolerances_for(in.scene).depth)) return std::nullopt;
+  const Numbers used = given_or(given, {0.99, 1.01});
   const Vec3 n = to_vec(m.normal).normalized();
-  for (const double fraction : {0.99, 1.01}) {
+  for (const double fraction : used) {
     Pose pb = in.scene.pose_b;
     pb.position += fraction * depth * n;
     mfz_manifold out;
-    if (auto f = run(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, pb}, out, "move-along-normal")) return f;
+    if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, pb}, out, "move-along-normal"))
+      return recorded(f, "move-along-normal", used);
     const bool should_collide = fraction < 1;
     if ((out.colliding == 1) != should_collide)
-      return Finding{"move-along-normal", std::string("moving B by ") + (should_collide ? "0.99" : "1.01") +
-                                              " of the depth along n gives colliding " + std::to_string(out.colliding)};
+      return recorded(Finding{"move-along-normal", "moving B by " + format_double(fraction) +
+                                                       " of the depth along n gives colliding " +
+                                                       std::to_string(out.colliding)},
+                      "move-along-normal", used);
   }
   return std::nullopt;
 }
 
+struct RelationRow {
+  const char* name;
+  std::optional<Finding> (*check)(const RelationInput&, GeneratorSession&, const Numbers*);
+};
+
+// The relations, in the order they run: one table gives the names and the dispatch.
+constexpr RelationRow kRelations[] = {
+    {"deterministic", deterministic},   {"swap-symmetry", swap_symmetry},     {"rigid-motion", rigid_motion},
+    {"vertex-order", vertex_order},     {"scale", scale},                     {"far-from-origin", far_from_origin},
+    {"move-along-normal", move_along_normal}, {"triangulated-faces", triangulated_faces},
+};
+
 }  // namespace
 
 const std::vector<std::string>& relation_names() {
-  static const std::vector<std::string> names = {"deterministic", "swap-symmetry",   "rigid-motion",      "vertex-order",
-                                                 "scale",         "far-from-origin", "move-along-normal", "triangulated-faces"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const RelationRow& row : kRelations) v.push_back(row.name);
+    return v;
+  }();
   return names;
 }
 
-std::optional<Finding> check_relation(const std::string& name, const RelationInput& in, GeneratorSession& g) {
-  if (name == "deterministic") return deterministic(in, g);
-  if (name == "swap-symmetry") return swap_symmetry(in, g);
-  if (name == "rigid-motion") return rigid_motion(in, g);
-  if (name == "vertex-order") return vertex_order(in, g);
-  if (name == "scale") return scale(in, g);
-  if (name == "far-from-origin") return far_from_origin(in, g);
-  if (name == "move-along-normal") return move_along_normal(in, g);
-  if (name == "triangulated-faces") return triangulated_faces(in, g);
+std::optional<RelationCall> relation_in(const CaseFile& c, std::string& error) {
+  for (const std::string& line : c.extensions) {
+    if (line.rfind("relation ", 0) != 0) continue;
+    std::istringstream words(line.substr(9));
+    RelationCall call;
+    words >> call.name;
+    std::string word;
+    while (words >> word) {
+      char* end = nullptr;
+      const double x = std::strtod(word.c_str(), &end);
+      if (*end != '\0' || !std::isfinite(x)) {
+        error = "relation line: '" + word + "' is not a finite number";
+        return std::nullopt;
+      }
+      call.numbers.push_back(x);
+    }
+    const auto& names = relation_names();
+    if (std::find(names.begin(), names.end(), call.name) == names.end()) {
+      error = "relation line: no relation named '" + call.name + "'";
+      return std::nullopt;
+    }
+    return call;
+  }
+  return std::nullopt;
+}
+
+std::optional<Finding> check_relation(const std::string& name, const RelationInput& in, GeneratorSession& g,
+                                      const std::vector<double>* numbers) {
+  for (const RelationRow& row : kRelations)
+    if (name == row.name) return row.check(in, g, numbers);
   return Finding{name, "no such relation"};
 }
 

@@ -27,11 +27,15 @@ for m in $mutants; do
     printf '  MISSED  %-22s (status %s in %s cases)\n' "$m" "$status" "$budget"
   fi
 done
-for g in "$plugins/libmfz_mutant_reducing.so" "$plugins/libmanifuzz_clipping.so" builtin; do
-  out=$("$manifuzz" check --generator "$g" --cases "$correct_budget" --seed "$seed" --out "$scratch/ok" --quiet 2>&1)
+# Correct generators: the variants that choose differently in ties at the
+# contract level, the built-in and its plugin at the strict level.
+for g in reducing last_incident_face b_reference_on_face_ties reversed_order \
+         "$plugins/libmanifuzz_clipping.so --strict" "builtin --strict"; do
+  case "$g" in *.so*|builtin*) ;; *) g="$plugins/libmfz_mutant_$g.so" ;; esac
+  out=$("$manifuzz" check --generator $g --cases "$correct_budget" --seed "$seed" --out "$scratch/ok" --quiet 2>&1)
   status=$?
   if [ "$status" -eq 0 ]; then
-    printf '  passes  %s\n' "$(basename "$g")"
+    printf '  passes  %s\n' "$g"
   else
     failures=$((failures + 1))
     printf '  FLAGGED %s (a correct generator): %s\n' "$g" "$(grep -E '^VIOLATION|found' <<<"$out" | head -2)"

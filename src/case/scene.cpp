@@ -42,7 +42,11 @@ SceneBuild make_scene(const CaseFile& c) {
   for (const Pose* pose : {&c.pose_a, &c.pose_b})
     if (!pose->position.allFinite() || !pose->orientation.coeffs().allFinite() || pose->orientation.norm() == 0)
       return {std::nullopt, "a pose is not finite or its quaternion is zero"};
-  Scene scene{std::move(*a.hull), std::move(*b.hull), c.pose_a, c.pose_b, 1, 0, 0, {}, {}};
+  return {posed_scene(std::move(*a.hull), c.pose_a, std::move(*b.hull), c.pose_b), {}};
+}
+
+Scene posed_scene(Hull a, const Pose& pose_a, Hull b, const Pose& pose_b) {
+  Scene scene{std::move(a), std::move(b), pose_a, pose_b, 1, 0, 0, {}, {}};
   scene.pose_a.orientation.normalize();
   scene.pose_b.orientation.normalize();
   scene.scale = std::max(scene.hull_a.diameter(), scene.hull_b.diameter());
@@ -50,7 +54,7 @@ SceneBuild make_scene(const CaseFile& c) {
   scene.world_a = posed(scene.hull_a, scene.pose_a);
   scene.world_b = posed(scene.hull_b, scene.pose_b);
   scene.world_extent = std::max(largest_coordinate(scene.world_a), largest_coordinate(scene.world_b));
-  return {std::move(scene), {}};
+  return scene;
 }
 
 }  // namespace mfz

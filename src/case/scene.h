@@ -30,6 +30,11 @@ struct SceneBuild {
   std::string error;  ///< one line, naming the hull at fault
 };
 
+/// Builds both hulls from the case's points and poses them; a degenerate
+/// hull or a non-finite pose is an error.
 SceneBuild make_scene(const CaseFile& c);
+
+/// A scene of hulls already built (a relation's transformed case).
+Scene posed_scene(Hull a, const Pose& pose_a, Hull b, const Pose& pose_b);
 
 }  // namespace mfz

@@ -16,10 +16,10 @@ constexpr long long kDefaultCases = 20000;
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--out", "--call-timeout", "--only"}, {"--quiet"}, error);
+      words, {"--generator", "--cases", "--seed", "--seconds", "--out", "--call-timeout", "--only"}, {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--out DIR])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--out DIR] [--strict])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
@@ -59,6 +59,7 @@ int check_command(const std::vector<std::string>& words) {
     options.selection.names.insert(only);
   }
   if (args->has("--quiet")) options.progress_every = 0;
+  if (args->has("--strict")) options.selection.level = props::Level::strict;
   const auto result = props::run_check(options, std::cerr, error);
   if (!result) {
     std::cerr << "manifuzz check: " << error << "\n";

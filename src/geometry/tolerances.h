@@ -65,9 +65,11 @@ inline constexpr double kIncidentAlignment = 1e-8;
 /// intersection that touched first, deeper than this fraction of the depth
 /// (B backed off along n by it): "as though the two objects were only
 /// touching", as the clipping method infers its manifold. The full
-/// intersection mixes in later, shallower parts (an edge lying 2e-3 rad off
-/// a face beyond the ridge it crosses, f21).
-inline constexpr double kRegionFirstTouch = 0.9;
+/// intersection mixes in later, shallower parts: an edge lying 2e-3 rad off
+/// a face beyond the ridge it crosses (f21), the far end of an edge tilted
+/// 1e-4 rad that reaches 98% of the depth while the incident face holds only
+/// the near end (seed 20261121, case 384).
+inline constexpr double kRegionFirstTouch = 0.99;
 /// spans-contact-region: the region's centroid may lie outside the contacts
 /// by this many times the distance it moves between kRegionFirstTouch and
 /// half-way to touching, plus kPoint L. A region that grows about a point (a
