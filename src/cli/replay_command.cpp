@@ -1,8 +1,11 @@
-// manifuzz replay [--generator G] [--json] FILE...
+// manifuzz replay [--generator G] [--json] [--strict] FILE...
+// Each case goes through the one pipeline (props/case_property.h): a plugin
+// runs in its worker, and a relation finding replays its relation with the
+// recorded parameters, so it exits 1 as it did when found.
 #include <cstdio>
 #include <iostream>
 
-#include "harness/case_run.h"
+#include "case_property.h"
 #include "cli/arguments.h"
 #include "harness/report.h"
 
@@ -18,20 +21,29 @@ struct Outcome {
   }
 };
 
-void print_text(const std::string& file, const CaseRun& run) {
-  std::cout << "case " << file << "\n"
-            << manifold_text(run.manifold) << verdict_text(run.verdict) << "verdict " << verdict_word(run.verdict)
-            << "\n\n";
+const char* word_of(const props::CaseOutcome& o) {
+  if (o.finding) return "violation";
+  return o.verdict ? verdict_word(*o.verdict) : "pass";
 }
 
-void add_json(Json& json, const std::string& file, const CaseRun* run, const std::string& error) {
+void print_text(const std::string& file, const props::CaseOutcome& o) {
+  std::cout << "case " << file << "\n";
+  if (o.manifold) std::cout << manifold_text(*o.manifold);
+  if (o.verdict) std::cout << verdict_text(*o.verdict);
+  if (o.finding) std::cout << "  FAIL " << o.finding->name << ": " << o.finding->detail << "\n";
+  std::cout << "verdict " << word_of(o) << "\n\n";
+}
+
+void add_json(Json& json, const std::string& file, const props::CaseOutcome* o, const std::string& error) {
   json.begin_object().key("file").value(file);
-  if (!run) {
+  if (!o) {
     json.key("verdict").value("input-error").key("error").value(error);
   } else {
-    json.key("scale").value(run->scene.scale);
-    manifold_json(json, run->manifold);
-    verdict_json(json, run->verdict);
+    json.key("scale").value(o->scale);
+    if (o->manifold) manifold_json(json, *o->manifold);
+    if (o->verdict) verdict_json(json, *o->verdict);
+    if (o->finding) json.key("finding").begin_object().key("name").value(o->finding->name).key("detail").value(o->finding->detail).end_object();
+    json.key("outcome").value(word_of(*o));
   }
   json.end_object();
 }
@@ -40,34 +52,40 @@ void add_json(Json& json, const std::string& file, const CaseRun* run, const std
 
 int replay_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator"}, {"--json"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout"}, {"--json", "--strict"}, error);
   if (!args || args->positional.empty()) {
     std::cerr << "manifuzz replay: " << (args ? "no case file given" : error)
-              << " (usage: manifuzz replay [--generator G] [--json] FILE...)\n";
+              << " (usage: manifuzz replay [--generator G] [--json] [--strict] FILE...)\n";
     return kExitInputError;
   }
-  const auto generator = Generator::open(args->get("--generator", "builtin"), error);
-  if (!generator) {
+  const auto session = open_session(args->get("--generator", "builtin"), 5, error);
+  if (!session) {
     std::cerr << "manifuzz replay: " << error << "\n";
     return kExitInputError;
   }
+  props::Selection selection;
+  if (args->has("--strict")) selection.level = props::Level::strict;
   const bool json_output = args->has("--json");
   Json json;
-  json.begin_object().key("generator").value(generator->name()).key("cases").begin_array();
+  json.begin_object().key("generator").value(session->name()).key("cases").begin_array();
   Outcome outcome;
   for (const std::string& file : args->positional) {
     const CaseParse parsed = read_case_file(file);
-    std::optional<CaseRun> run;
-    if (parsed.value) run = run_case(*parsed.value, *generator, error);
-    else error = parsed.error;
+    std::optional<props::CaseOutcome> run;
+    if (parsed.value) {
+      run = props::check_case(*parsed.value, *session, selection);
+      if (run->invalid) error = file + ": " + run->invalid_reason, run.reset();
+    } else {
+      error = parsed.error;
+    }
     if (!run) {
-      std::cerr << "manifuzz replay: " << (parsed.value ? file + ": " : "") << error << "\n";
+      std::cerr << "manifuzz replay: " << error << "\n";
       outcome.worsen(kExitInputError);
     } else {
-      const Verdict& v = run->verdict;
-      if (v.refused() || v.first_violation()) {
+      if (run->finding) {
         outcome.worsen(kExitViolation);
-        std::printf("VIOLATION %s %s\n", v.refused() ? "refused" : v.first_violation()->name.c_str(), file.c_str());
+        // --json prints JSON alone on stdout; the VIOLATION line is in it.
+        if (!json_output) std::printf("VIOLATION %s %s\n", run->finding->name.c_str(), file.c_str());
       }
       if (!json_output) print_text(file, *run);
     }
@@ -75,6 +93,7 @@ int replay_command(const std::vector<std::string>& words) {
   }
   json.end_array().end_object();
   if (json_output) std::cout << json.str() << "\n";
+  std::cout.flush();
   return outcome.exit_status;
 }
 

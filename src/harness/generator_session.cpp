@@ -1,6 +1,7 @@
 #include "harness/generator_session.h"
 
 #include <poll.h>
+#include <sys/prctl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -91,6 +92,12 @@ bool read_hull(int fd, OwnedHull& h) {
 // The worker: loads the generator, says hello, then answers requests until
 // its input closes.
 [[noreturn]] void serve(const std::string& spec, int in, int out) {
+  // The worker dies with the harness (a SIGKILL included), and what a plugin
+  // prints goes to the harness's stderr, never into its stdout, where
+  // scripts read VIOLATION lines and JSON.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (getppid() == 1) _exit(0);  // the harness died before the line above
+  dup2(STDERR_FILENO, STDOUT_FILENO);
   std::string error;
   const auto generator = Generator::open(spec, error);
   const std::string hello = generator ? "ok " + generator->name() : "error " + error;
@@ -123,6 +130,7 @@ class WorkerSession final : public GeneratorSession {
     pid_ = fork();
     if (pid_ < 0) return "cannot fork the worker";
     if (pid_ == 0) {
+      setpgid(0, 0);  // its own group: stopping it stops whatever the plugin forked
       close(to_worker[1]);
       close(from_worker[0]);
       serve(spec_, to_worker[0], from_worker[1]);
@@ -183,6 +191,7 @@ class WorkerSession final : public GeneratorSession {
   std::string reap() {
     int wstatus = 0;
     std::string how = "unknown";
+    if (pid_ > 0) kill(-pid_, SIGKILL);  // the plugin's own children
     if (pid_ > 0 && waitpid(pid_, &wstatus, 0) == pid_) {
       if (WIFSIGNALED(wstatus)) how = std::string("signal ") + strsignal(WTERMSIG(wstatus));
       else if (WIFEXITED(wstatus)) how = "exit status " + std::to_string(WEXITSTATUS(wstatus));
@@ -194,6 +203,7 @@ class WorkerSession final : public GeneratorSession {
 
   void stop() {
     if (pid_ > 0) {
+      kill(-pid_, SIGKILL);
       kill(pid_, SIGKILL);
       waitpid(pid_, nullptr, 0);
       pid_ = -1;

@@ -141,4 +141,19 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
   return region;
 }
 
+bool support_on_one_face(const Hull& hull, const std::vector<Vec3>& world, const Vec3& d, double window) {
+  double top = -INFINITY;
+  for (const Vec3& p : world) top = std::max(top, d.dot(p));
+  std::vector<int> support;
+  for (int i = 0; i < static_cast<int>(world.size()); ++i)
+    if (d.dot(world[i]) >= top - window) support.push_back(i);
+  for (int f = 0; f < hull.face_count(); ++f) {
+    int held = 0;
+    for (int k = 0; k < hull.face_size(f); ++k)
+      held += std::count(support.begin(), support.end(), hull.face_vertex(f, k)) > 0 ? 1 : 0;
+    if (held == static_cast<int>(support.size())) return true;
+  }
+  return false;
+}
+
 }  // namespace mfz
