@@ -73,7 +73,7 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     if (check.status == CheckStatus::fail && selection.wants(check.name)) {
       char margin[96];
       std::snprintf(margin, sizeof margin, " (error %.3g L, tol %.3g L)", check.error, check.tolerance);
-      outcome.finding = Finding{check.name, check.detail + margin, {}};
+      outcome.finding = Finding{check.name, check.detail + margin, {}, check.error, check.tolerance};
       return outcome;
     }
   // Relations only make sense on a manifold that is itself right.

@@ -68,11 +68,32 @@ void round_pose(CaseFile& c, Pose CaseFile::*pose, const StillFails& still_fails
   for (int k = 0; k < 4 && budget.left(); ++k) round_number(c, (c.*pose).orientation.coeffs()(k), still_fails, steps);
 }
 
+// Moves the case so that A sits at the origin, then turns it so that A has
+// the identity rotation: a rigid motion of both poses, which a person reads
+// more easily. Kept only if the failure survives the motion's rounding.
+void toward_origin_and_identity(CaseFile& c, const StillFails& still_fails, int& steps) {
+  if (c.pose_a.position != Vec3::Zero()) {
+    CaseFile moved = c;
+    moved.pose_b.position = c.pose_b.position - c.pose_a.position;
+    moved.pose_a.position = Vec3::Zero();
+    if (still_fails(moved)) c = std::move(moved), ++steps;
+  }
+  const Quat qa = c.pose_a.orientation.normalized();
+  if (qa.coeffs() != Quat::Identity().coeffs() && c.pose_a.position == Vec3::Zero()) {
+    CaseFile turned = c;
+    const Quat back = qa.conjugate();
+    turned.pose_a.orientation = Quat::Identity();
+    turned.pose_b = Pose{back * c.pose_b.position, (back * c.pose_b.orientation.normalized()).normalized()};
+    if (still_fails(turned)) c = std::move(turned), ++steps;
+  }
+}
+
 }  // namespace
 
 int shrink_case_file(CaseFile& failing, const StillFails& still_fails, double seconds) {
   const Budget budget(seconds);
   int steps = 0;
+  toward_origin_and_identity(failing, still_fails, steps);
   bool changed = true;
   while (changed && budget.left()) {
     changed = drop_points(failing, &CaseFile::points_a, still_fails, budget, steps);

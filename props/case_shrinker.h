@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Shrinking a failing case file itself, after RapidCheck's shrink tree has
-/// done what the families allow: drop whole points (a duplicate or an
+/// done what the families allow: move the case so that A sits at the origin
+/// with the identity rotation, drop whole points (a duplicate or an
 /// interior point never changes the hull, and the families cannot tell), and
 /// round each coordinate, position and quaternion component to zero or as
 /// few significant digits as keep the failure.

@@ -1,11 +1,17 @@
 #include "check_driver.h"
 
 #include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <iomanip>
 #include <map>
 #include <ostream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "case_shrinker.h"
 #include "families.h"
@@ -14,6 +20,13 @@ namespace mfz::props {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// Shrinking keeps a candidate whose error is at least this fraction of the
+/// original's (the same order of magnitude).
+constexpr double kSameOrder = 0.1;
+/// Budgets of the two shrinking stages (both also end at the run's deadline).
+constexpr double kShrinkTreeSeconds = 120;
+constexpr double kShrinkFileSeconds = 60;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -60,18 +73,42 @@ void record(Statistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
   if (o.tags.tie) stats.count("special", "axis tie");
 }
 
+// Set by SIGINT and SIGTERM: the run stops, writes what it has and prints
+// its summary.
+volatile std::sig_atomic_t interrupted = 0;
+extern "C" void on_interrupt(int) { interrupted = 1; }
+
+// The run's end: --seconds covers shrinking too.
+struct Deadline {
+  std::optional<Clock::time_point> at;
+  double left() const {
+    if (interrupted) return 0;
+    return at ? std::chrono::duration<double>(*at - Clock::now()).count() : INFINITY;
+  }
+};
+
+// A smaller case still shows the finding when the same check fails by a
+// margin of the same order as the original's: a shrink that turns a 1.77 L
+// error into a rounding-sized one has found a different, lesser failure.
+bool same_failure(const Finding& original, const Finding& candidate) {
+  if (candidate.name != original.name) return false;
+  return !(original.error > 0) || candidate.error >= kSameOrder * original.error;
+}
+
 // Greedy shrinking over RapidCheck's shrink tree: take the first smaller case
-// that fails with the same name, until none does.
+// that fails the same way, until none does.
 rc::Shrinkable<GeneratedCase> shrink(rc::Shrinkable<GeneratedCase> failing, Finding& finding, GeneratorSession& g,
-                                     const Selection& selection, int& steps) {
+                                     const Selection& selection, const Deadline& deadline, int& steps) {
   const auto started = Clock::now();
+  const Finding original = finding;
   bool smaller = true;
-  while (smaller && since(started) < 120) {
+  while (smaller && since(started) < kShrinkTreeSeconds && deadline.left() > 0) {
     smaller = false;
     auto candidates = failing.shrinks();
     while (auto candidate = candidates.next()) {
+      if (deadline.left() <= 0) break;
       const CaseOutcome o = check_case(candidate->value().file, g, selection);
-      if (!o.invalid && o.finding && o.finding->name == finding.name) {
+      if (!o.invalid && o.finding && same_failure(original, *o.finding)) {
         failing = *candidate;
         finding = *o.finding;
         smaller = true;
@@ -103,9 +140,36 @@ std::string write_case(const CheckOptions& options, const GeneratedCase& g, cons
 
 }  // namespace
 
+bool prepare_out_dir(const std::string& dir, std::string& error) {
+  if (dir.empty()) {
+    error = "--out needs a folder name";
+    return false;
+  }
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) {
+    error = "cannot create --out folder " + quoted(dir, 4096) + ": " + ec.message();
+    return false;
+  }
+  const std::string probe = dir + "/.manifuzz-probe-" + std::to_string(getpid());
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  const bool writable = f && std::fputs("probe\n", f) >= 0 && std::fclose(f) == 0;
+  if (!f) error = "cannot write into --out folder " + quoted(dir, 4096) + ": " + std::strerror(errno);
+  else if (!writable) error = "cannot write into --out folder " + quoted(dir, 4096);
+  std::remove(probe.c_str());
+  return writable;
+}
+
 std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error) {
+  // A finding must never be lost to an unwritable folder after minutes of
+  // shrinking: the folder is tried first.
+  if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
   auto generator = open_session(options.generator, options.call_timeout, error);
   if (!generator) return std::nullopt;
+  interrupted = 0;
+  std::signal(SIGINT, on_interrupt);
+  std::signal(SIGTERM, on_interrupt);
+  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit is a write error to report, not a death
   log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << ", "
       << (options.selection.level == Level::strict ? "strict" : "contract") << " level (replay with --seed "
       << options.seed << ")\n";
@@ -114,10 +178,13 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
   Statistics stats;
   CheckResult result;
   const auto started = Clock::now();
+  Deadline deadline;
+  if (options.seconds)
+    deadline.at = started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*options.seconds));
   double last_progress = 0;
   for (long long index = 0;; ++index) {
     if (options.cases && result.cases >= *options.cases) break;
-    if (options.seconds && since(started) >= *options.seconds) break;
+    if (deadline.left() <= 0) break;
     const auto shrinkable = gen(random.split(), static_cast<int>(index % 100));
     const GeneratedCase generated = shrinkable.value();
     const CaseOutcome outcome = check_case(generated.file, *generator, options.selection);
@@ -130,17 +197,19 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
     if (outcome.finding) {
       Finding finding = *outcome.finding;
       log << "found " << finding.name << " at case " << index << ": " << finding.detail << "\nshrinking...\n";
-      const auto minimal = shrink(shrinkable, finding, *generator, options.selection, result.shrink_steps);
+      const Finding original = finding;
+      const auto minimal = shrink(shrinkable, finding, *generator, options.selection, deadline, result.shrink_steps);
       GeneratedCase smallest = minimal.value();
       result.shrink_steps += shrink_case_file(
           smallest.file,
           [&](const CaseFile& candidate) {
+            if (deadline.left() <= 0) return false;
             const CaseOutcome o = check_case(candidate, *generator, options.selection);
-            if (o.invalid || !o.finding || o.finding->name != finding.name) return false;
+            if (o.invalid || !o.finding || !same_failure(original, *o.finding)) return false;
             finding = *o.finding;
             return true;
           },
-          60);
+          std::min(kShrinkFileSeconds, deadline.left()));
       result.finding = finding;
       result.found_at_case = index;
       result.case_path = write_case(options, smallest, finding, index, result.minimised_text, error);
@@ -157,6 +226,10 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
     }
   }
   result.seconds = since(started);
+  result.interrupted = interrupted != 0;
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  if (result.interrupted) log << "manifuzz check: interrupted; the summary so far:\n";
   log << "manifuzz check: " << result.cases << " cases in " << std::setprecision(3) << result.seconds << " s ("
       << static_cast<long long>(result.cases / std::max(result.seconds, 1e-9)) << " cases/s), " << result.invalid
       << " invalid inputs discarded\n";

@@ -32,7 +32,12 @@ struct CheckResult {
   std::string case_path;     ///< the minimised case file
   std::string minimised_text;
   int shrink_steps = 0;
+  bool interrupted = false;  ///< stopped by SIGINT or SIGTERM
 };
+
+/// Creates `dir` and writes a probe file into it; false and a one-line
+/// `error` when it cannot (an empty name included).
+bool prepare_out_dir(const std::string& dir, std::string& error);
 
 /// Runs the check; progress and statistics go to `log`. Returns nullopt and a
 /// one-line `error` when the generator cannot be loaded or the out folder

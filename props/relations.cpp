@@ -59,7 +59,8 @@ std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& ou
   if (const InvariantCheck* bad = v.first_violation()) {
     char margin[96];
     std::snprintf(margin, sizeof margin, " (error %.3g L, tol %.3g L)", bad->error, bad->tolerance);
-    return Finding{relation, "the " + relation + " run fails " + bad->name + ": " + bad->detail + margin};
+    return Finding{relation, "the " + relation + " run fails " + bad->name + ": " + bad->detail + margin, {},
+                   bad->error, bad->tolerance};
   }
   return std::nullopt;
 }

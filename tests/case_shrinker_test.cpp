@@ -51,8 +51,24 @@ TEST(CaseShrinker, RoundsPosesAsFarAsTheFailureAllows) {
   };
   shrink_case_file(c, apart, 10);
   EXPECT_EQ(c.pose_a.position, Vec3::Zero());
-  EXPECT_EQ(c.pose_b.position.x(), 3.3) << "0 and 3 no longer fail";
+  EXPECT_EQ(c.pose_b.position.x(), 3.2) << "A moved to the origin first; B's offset 3.2098765 rounds to 3.2, 3 fails";
   EXPECT_EQ(c.pose_b.orientation.coeffs(), Quat::Identity().coeffs()) << "x, y, z to 0, w to one digit";
+}
+
+TEST(CaseShrinker, MovesTheCaseSoThatASitsAtTheOriginWithTheIdentityRotation) {
+  const Quat turn = test::about(Vec3(1, 2, 3).normalized(), 0.7);
+  CaseFile c = test::make_case(test::tetrahedron_points(), {Vec3(5, -2, 1), turn}, test::tetrahedron_points(),
+                               {Vec3(8, -2, 1), turn});
+  // Fails while B is more than 2.5 from A, whatever the frame: a rigid motion
+  // keeps it (a zero quaternion, which make_scene refuses, does not fail).
+  const auto apart = [](const CaseFile& k) {
+    return k.pose_a.orientation.norm() > 0 && k.pose_b.orientation.norm() > 0 &&
+           (k.pose_b.position - k.pose_a.position).norm() > 2.5;
+  };
+  shrink_case_file(c, apart, 10);
+  EXPECT_EQ(c.pose_a.position, Vec3::Zero());
+  EXPECT_EQ(c.pose_a.orientation.coeffs(), Quat::Identity().coeffs());
+  EXPECT_NEAR(c.pose_b.position.norm(), 3, 0.5);
 }
 
 TEST(CaseShrinker, KeepsACaseThatCannotShrink) {

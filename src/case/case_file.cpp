@@ -3,11 +3,31 @@
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 namespace mfz {
+
+std::string quoted(std::string_view text, size_t limit) {
+  std::string out = "'";
+  for (const char c : text.substr(0, limit)) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte < 0x20 || byte == 0x7f) {
+      char escape[8];
+      std::snprintf(escape, sizeof escape, "\\x%02x", byte);
+      out += escape;
+    } else {
+      out += c;
+    }
+  }
+  return out + (text.size() > limit ? "...'" : "'");
+}
+
 namespace {
 
 std::vector<std::string_view> split_words(std::string_view line) {
@@ -24,18 +44,19 @@ std::vector<std::string_view> split_words(std::string_view line) {
 }
 
 // strtod accepts decimal and hex floats, as the contract says; the whole word
-// must be consumed, and NaN and Inf are input errors.
+// must be consumed (a NUL inside it ends strtod's reading, not the word), and
+// NaN and Inf are input errors.
 bool read_number(std::string_view word, double& out, std::string& why) {
   const std::string text(word);
   char* end = nullptr;
   errno = 0;
   out = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0') {
-    why = "'" + text + "' is not a number";
+  if (end == text.c_str() || end != text.c_str() + text.size()) {
+    why = quoted(text) + " is not a number";
     return false;
   }
   if (!std::isfinite(out)) {
-    why = "'" + text + "' is not finite (NaN and Inf are not allowed)";
+    why = quoted(text) + " is not finite (NaN and Inf are not allowed)";
     return false;
   }
   return true;
@@ -44,8 +65,9 @@ bool read_number(std::string_view word, double& out, std::string& why) {
 bool read_numbers(const std::vector<std::string_view>& words, size_t first, size_t count, double* out,
                   std::string& why) {
   if (words.size() != first + count) {
-    why = "expected " + std::to_string(count) + " numbers after '" + std::string(words[0]) +
-          (first > 1 ? " " + std::string(words[1]) : "") + "', found " + std::to_string(words.size() - first);
+    why = "expected " + std::to_string(count) + " numbers after " +
+          quoted(std::string(words[0]) + (first > 1 ? " " + std::string(words[1]) : "")) + ", found " +
+          std::to_string(words.size() - first);
     return false;
   }
   for (size_t k = 0; k < count; ++k)
@@ -75,7 +97,7 @@ struct Parser {
     std::string why;
     if (!seen_header) {
       if (words.size() == 2 && words[0] == "manifuzz-case") {
-        if (words[1] != "1") return "unsupported case file version '" + std::string(words[1]) + "' (this reader knows 1)";
+        if (words[1] != "1") return "unsupported case file version " + quoted(words[1]) + " (this reader knows 1)";
         seen_header = true;
         return {};
       }
@@ -92,7 +114,11 @@ struct Parser {
       if (!section) return "a vertex 'v' before 'hull A' or 'hull B'";
       double xyz[3];
       if (!read_numbers(words, 1, 3, xyz, why)) return why;
-      (section == 'A' ? result.points_a : result.points_b).emplace_back(xyz[0], xyz[1], xyz[2]);
+      auto& points = section == 'A' ? result.points_a : result.points_b;
+      if (points.size() >= kMaxPointsPerHull)
+        return "hull " + std::string(1, section) + " has more than " + std::to_string(kMaxPointsPerHull) +
+               " points (the limit)";
+      points.emplace_back(xyz[0], xyz[1], xyz[2]);
       return {};
     }
     if (words[0] == "pose") {
@@ -102,7 +128,7 @@ struct Parser {
       double p[7];
       if (!read_numbers(words, 2, 7, p, why)) return why;
       const Quat q(p[3], p[4], p[5], p[6]);
-      if (q.norm() == 0) return "the orientation quaternion is zero";
+      if (q.coeffs().cwiseAbs().maxCoeff() == 0) return "the orientation quaternion is zero";
       (which == 0 ? result.pose_a : result.pose_b) = Pose{Vec3(p[0], p[1], p[2]), q};
       seen_pose[which] = true;
       return {};
@@ -114,7 +140,7 @@ struct Parser {
       result.extensions.push_back(kept);
       return {};
     }
-    return "unrecognised line starting with '" + std::string(words[0]) + "'";
+    return "unrecognised line starting with " + quoted(words[0]);
   }
 
   std::string finish() {
@@ -146,11 +172,16 @@ CaseParse parse_case(std::string_view text) {
 
 CaseParse read_case_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  if (!in) return {std::nullopt, path + ": cannot open"};
-  std::ostringstream text;
-  text << in.rdbuf();
-  CaseParse parsed = parse_case(text.str());
-  if (!parsed.value) parsed.error = path + ": " + parsed.error;
+  if (!in) return {std::nullopt, quoted(path, 4096) + ": cannot open"};
+  // Bounded: a case file is small, and /dev/zero or a mistaken path must not
+  // grow until memory runs out.
+  std::string text(kMaxCaseFileBytes + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > kMaxCaseFileBytes)
+    return {std::nullopt, quoted(path, 4096) + ": larger than " + std::to_string(kMaxCaseFileBytes) + " bytes (the limit)"};
+  CaseParse parsed = parse_case(text);
+  if (!parsed.value) parsed.error = quoted(path, 4096) + ": " + parsed.error;
   return parsed;
 }
 
@@ -177,15 +208,22 @@ std::string format_case(const CaseFile& c) {
   return out;
 }
 
+// Written to a temporary name beside it, then renamed: a full disk or an
+// interrupted run never leaves a half-written or empty case in its place.
 bool write_case_file(const std::string& path, const CaseFile& c, std::string& error) {
-  std::ofstream out(path, std::ios::binary);
+  const std::string temporary = path + ".tmp" + std::to_string(getpid());
+  const std::string text = format_case(c);
+  FILE* out = std::fopen(temporary.c_str(), "wb");
   if (!out) {
-    error = path + ": cannot write";
+    error = quoted(path, 4096) + ": cannot write: " + std::strerror(errno);
     return false;
   }
-  out << format_case(c);
-  if (!out) {
-    error = path + ": write failed";
+  const bool written = std::fwrite(text.data(), 1, text.size(), out) == text.size();
+  const int saved = errno;
+  const bool closed = std::fclose(out) == 0;
+  if (!written || !closed || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    error = quoted(path, 4096) + ": write failed: " + std::strerror(written && closed ? errno : saved);
+    std::remove(temporary.c_str());
     return false;
   }
   return true;

@@ -21,6 +21,14 @@
 
 namespace mfz {
 
+/// Input limits: a case file is small text; past these it is an input error.
+inline constexpr size_t kMaxCaseFileBytes = 1 << 20;
+inline constexpr size_t kMaxPointsPerHull = 1024;
+
+/// `text` in single quotes for a one-line message: control bytes as \xNN,
+/// at most `limit` characters, so that input never breaks a message's line.
+std::string quoted(std::string_view text, size_t limit = 64);
+
 /// A case as written: points and poses exactly as read (the quaternion is not
 /// normalised here; `Scene` does that).
 struct CaseFile {
@@ -44,7 +52,8 @@ CaseParse read_case_file(const std::string& path);
 std::string format_double(double value);
 /// The case as text; `parse_case(format_case(c))` gives `c` back bit for bit.
 std::string format_case(const CaseFile& c);
-/// Writes `format_case(c)` to `path`; false and a reason on failure.
+/// Writes `format_case(c)` to `path` through a temporary file and a rename;
+/// false and a reason on failure (the old file, if any, is left as it was).
 bool write_case_file(const std::string& path, const CaseFile& c, std::string& error);
 
 }  // namespace mfz

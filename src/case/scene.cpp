@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "geometry/tolerances.h"
@@ -40,15 +41,41 @@ SceneBuild make_scene(const CaseFile& c) {
   HullBuild b = build_hull(c.points_b);
   if (!b.hull) return {std::nullopt, "hull B: " + b.error};
   for (const Pose* pose : {&c.pose_a, &c.pose_b})
-    if (!pose->position.allFinite() || !pose->orientation.coeffs().allFinite() || pose->orientation.norm() == 0)
+    if (!pose->position.allFinite() || !pose->orientation.coeffs().allFinite() ||
+        pose->orientation.coeffs().cwiseAbs().maxCoeff() == 0)
       return {std::nullopt, "a pose is not finite or its quaternion is zero"};
-  return {posed_scene(std::move(*a.hull), c.pose_a, std::move(*b.hull), c.pose_b), {}};
+  Scene scene = posed_scene(std::move(*a.hull), c.pose_a, std::move(*b.hull), c.pose_b);
+  // Past this the world frame's rounding (64 ulps of the coordinates) exceeds
+  // 1e-6 L, every tolerance is mostly rounding, and a wrong normal would pass.
+  if (tol::world_rounding(scene.world_extent) > tol::kFarthestFrame * scene.scale) {
+    char why[160];
+    std::snprintf(why, sizeof why,
+                  "the case lies %.3g L from the origin: past %.3g L the frame's rounding exceeds %g L, and no "
+                  "tolerance would mean anything",
+                  scene.world_extent / scene.scale, tol::kFarthestFrame / tol::world_rounding(1), tol::kFarthestFrame);
+    return {std::nullopt, why};
+  }
+  return {std::move(scene), {}};
 }
+
+namespace {
+
+// Squaring components near 1e154 overflows and near 1e-160 underflows, and
+// normalize() then returns garbage: such a quaternion is scaled by its
+// largest component first. Ordinary ones are normalised as they always were,
+// so every case replays to the same bits.
+Quat unit(Quat q) {
+  const double largest = q.coeffs().cwiseAbs().maxCoeff();
+  if (largest > 1e100 || largest < 1e-100) q.coeffs() /= largest;
+  return q.normalized();
+}
+
+}  // namespace
 
 Scene posed_scene(Hull a, const Pose& pose_a, Hull b, const Pose& pose_b) {
   Scene scene{std::move(a), std::move(b), pose_a, pose_b, 1, 0, 0, {}, {}};
-  scene.pose_a.orientation.normalize();
-  scene.pose_b.orientation.normalize();
+  scene.pose_a.orientation = unit(scene.pose_a.orientation);
+  scene.pose_b.orientation = unit(scene.pose_b.orientation);
   scene.scale = std::max(scene.hull_a.diameter(), scene.hull_b.diameter());
   scene.shortest_edge = std::min(shortest_edge_of(scene.hull_a), shortest_edge_of(scene.hull_b));
   scene.world_a = posed(scene.hull_a, scene.pose_a);

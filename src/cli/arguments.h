@@ -14,6 +14,9 @@ namespace mfz::cli {
 inline constexpr int kExitClean = 0;
 inline constexpr int kExitViolation = 1;
 inline constexpr int kExitInputError = 2;
+/// Stopped by Ctrl-C or SIGTERM before the budget, nothing found: the
+/// shell's convention (128 + SIGINT), so a script never reads it as a pass.
+inline constexpr int kExitInterrupted = 130;
 
 struct Arguments {
   std::map<std::string, std::string> options;  ///< "--seed" -> "7"

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "case_property.h"
 #include "harness/case_run.h"
 #include "oracles/minkowski_difference.h"
 #include "cli/arguments.h"
@@ -105,50 +106,69 @@ void describe_oracles(std::ostream& out, const CaseRun& run) {
     out << "     libccd MPR: depth " << with_mpr.mpr_depth << " along " << vec_text(with_mpr.mpr_direction) << "\n";
 }
 
+bool named_relation(const CaseFile& c) {
+  for (const std::string& line : c.extensions)
+    if (line.rfind("relation ", 0) == 0) return true;
+  return false;
+}
+
 }  // namespace
 
-
+// The manifold and verdict come from the one pipeline (a plugin in its
+// worker, a relation finding's relation replayed); the narration of the
+// built-in's steps re-runs the built-in in process with a trace.
 int explain_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator"}, {}, error);
+  const auto args = parse_arguments(words, {"--generator"}, {"--strict"}, error);
   if (!args || args->positional.size() != 1) {
     std::cerr << "manifuzz explain: " << (args ? "expected exactly one case file" : error)
-              << " (usage: manifuzz explain [--generator G] FILE)\n";
+              << " (usage: manifuzz explain [--generator G] [--strict] FILE)\n";
     return kExitInputError;
   }
-  const auto generator = Generator::open(args->get("--generator", "builtin"), error);
-  if (!generator) {
+  const std::string spec = args->get("--generator", "builtin");
+  const auto session = open_session(spec, 5, error);
+  if (!session) {
     std::cerr << "manifuzz explain: " << error << "\n";
     return kExitInputError;
   }
   const std::string& file = args->positional[0];
   const CaseParse parsed = read_case_file(file);
-  std::optional<CaseRun> run;
-  if (parsed.value) run = run_case(*parsed.value, *generator, error);
-  if (!run) {
-    std::cerr << "manifuzz explain: " << (parsed.value ? file + ": " + error : parsed.error) << "\n";
+  props::Selection selection;
+  if (args->has("--strict")) selection.level = props::Level::strict;
+  std::optional<props::CaseOutcome> outcome;
+  if (parsed.value) outcome = props::check_case(*parsed.value, *session, selection);
+  if (!parsed.value || outcome->invalid) {
+    std::cerr << "manifuzz explain: " << (parsed.value ? file + ": " + outcome->invalid_reason : parsed.error) << "\n";
     return kExitInputError;
   }
+  SceneBuild built = make_scene(*parsed.value);
+  const OracleAnswers oracles = consult_oracles(*built.scene);
+  const props::Finding* finding = outcome->finding ? &*outcome->finding : nullptr;
   std::ostream& out = std::cout;
   out << "Case " << file << "\n";
-  for (const std::string& line : parsed.value->extensions) out << "  " << line << "\n";
-  describe_hull(out, 'A', run->scene.hull_a, run->scene.pose_a);
-  describe_hull(out, 'B', run->scene.hull_b, run->scene.pose_b);
-  out << "  L (scale of the case, the larger diameter) = " << run->scene.scale
+  for (const std::string& line : parsed.value->extensions) out << "  " << quoted(line, 4096) << "\n";
+  if (!outcome->manifold) {
+    out << "\nThe generator " << session->name() << " gave no answer: " << finding->name << " (" << finding->detail
+        << ").\n";
+    return kExitViolation;
+  }
+  const CaseRun run{std::move(*built.scene), *outcome->manifold, oracles, *outcome->verdict};
+  describe_hull(out, 'A', run.scene.hull_a, run.scene.pose_a);
+  describe_hull(out, 'B', run.scene.hull_b, run.scene.pose_b);
+  out << "  L (scale of the case, the larger diameter) = " << run.scene.scale
       << "; tolerances below are in units of L\n";
-  describe_sat(out, *run);
-  if (generator->name() == Generator::builtin().name()) describe_clipping(out, *run);
-  else out << "\n2-4. " << generator->name() << " is a plugin: its steps are not visible, only its answer.\n";
-  out << "\n5. The manifold (" << generator->name() << "):\n" << manifold_text(run->manifold, "     ");
-  describe_oracles(out, *run);
-  out << "\n7. Invariants:\n" << verdict_text(run->verdict, "     ");
-  const InvariantCheck* failed = run->verdict.first_violation();
-  if (run->verdict.refused()) out << "\nVerdict: the generator refused this case.\n";
-  else if (failed)
-    out << "\nVerdict: " << failed->name << " fails: error " << failed->error << " L against a tolerance of "
-        << failed->tolerance << " L (" << failed->detail << ").\n";
-  else out << "\nVerdict: every invariant holds.\n";
-  return failed || run->verdict.refused() ? kExitViolation : kExitClean;
+  describe_sat(out, run);
+  if (spec == "builtin") describe_clipping(out, run);
+  else out << "\n2-4. " << session->name() << " is a plugin: its steps are not visible, only its answer.\n";
+  out << "\n5. The manifold (" << session->name() << "):\n" << manifold_text(run.manifold, "     ");
+  describe_oracles(out, run);
+  out << "\n7. Invariants:\n" << verdict_text(run.verdict, "     ");
+  if (run.verdict.refused()) out << "\nVerdict: the generator refused this case.\n";
+  else if (finding)
+    out << "\nVerdict: " << finding->name << " fails: " << finding->detail << ".\n";
+  else out << "\nVerdict: every invariant holds" << (named_relation(*parsed.value) ? ", and so does the case's relation" : "")
+           << ".\n";
+  return finding ? kExitViolation : kExitClean;
 }
 
 }  // namespace mfz::cli

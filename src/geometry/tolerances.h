@@ -26,6 +26,10 @@ inline constexpr double world_rounding(double magnitude) {
   return kWorldUlps * std::numeric_limits<double>::epsilon() * magnitude;
 }
 
+/// Input limit: a case whose world frame's rounding exceeds this (x L) is
+/// refused (7e7 L from the origin): beyond it the tolerances are rounding.
+inline constexpr double kFarthestFrame = 1e-6;
+
 /// |depth| or gap below this (x L) is "touching": either colliding answer passes.
 inline constexpr double kTouching = 1e-9;
 /// Two SAT axes whose overlaps differ by less than this (x L) tie.

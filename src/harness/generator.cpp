@@ -41,7 +41,10 @@ std::optional<Generator> Generator::open(const std::string& spec, std::string& e
     error = "unknown generator '" + spec + "': expected 'builtin' or a path to a plugin .so";
     return std::nullopt;
   }
-  void* handle = dlopen(spec.c_str(), RTLD_NOW | RTLD_LOCAL);
+  // dlopen searches the system's library path for a name without a slash:
+  // `x.so` means the file in the current folder, as a user expects.
+  const std::string path = spec.find('/') == std::string::npos ? "./" + spec : spec;
+  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     error = "cannot load generator: " + one_line(dlerror());
     return std::nullopt;
