@@ -161,6 +161,7 @@ bool prepare_out_dir(const std::string& dir, std::string& error) {
 }
 
 std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error) {
+  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit is a write error to report, not a death
   // A finding must never be lost to an unwritable folder after minutes of
   // shrinking: the folder is tried first.
   if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
@@ -169,7 +170,6 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
   interrupted = 0;
   std::signal(SIGINT, on_interrupt);
   std::signal(SIGTERM, on_interrupt);
-  std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit is a write error to report, not a death
   log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << ", "
       << (options.selection.level == Level::strict ? "strict" : "contract") << " level (replay with --seed "
       << options.seed << ")\n";

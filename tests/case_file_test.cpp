@@ -1,11 +1,16 @@
 #include "case/case_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstring>
+#include <filesystem>
 #include <limits>
 #include <random>
+
+#include "test_support.h"
 
 namespace mfz {
 namespace {
@@ -102,4 +107,43 @@ TEST(CaseFileWriting, NumbersReadBackToTheSameBits) {
 }
 
 }  // namespace
+// A full disk (here a file-size limit) fails the write, says so, and leaves
+// the case already there as it was: never an empty or half-written file.
+TEST(CaseFileWriting, AFailedWriteReportsItAndKeepsTheOldFile) {
+  const std::string path = ::testing::TempDir() + "/kept.case";
+  CaseFile small = test::make_case(test::tetrahedron_points(), {}, test::tetrahedron_points(), {});
+  std::string error;
+  ASSERT_TRUE(write_case_file(path, small, error)) << error;
+  const std::string before = format_case(small);
+  CaseFile large = small;
+  for (int i = 0; i < 200; ++i) large.extensions.push_back("note padding line " + std::to_string(i));
+  rlimit old{};
+  getrlimit(RLIMIT_FSIZE, &old);
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit tight = old;
+  tight.rlim_cur = 512;
+  setrlimit(RLIMIT_FSIZE, &tight);
+  const bool written = write_case_file(path, large, error);
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, previous);
+  EXPECT_FALSE(written);
+  EXPECT_NE(error.find("write failed"), std::string::npos) << error;
+  const CaseParse reread = read_case_file(path);
+  ASSERT_TRUE(reread.value) << reread.error;
+  EXPECT_EQ(format_case(*reread.value), before);
+  for (const auto& entry : std::filesystem::directory_iterator(::testing::TempDir()))
+    EXPECT_EQ(entry.path().string().find("kept.case.tmp"), std::string::npos) << "a temporary file was left behind";
+}
+
+TEST(CaseFileReading, RefusesANulInsideANumberAndEscapesControlBytes) {
+  using namespace std::string_literals;
+  const CaseParse nul = parse_case("manifuzz-case 1\nhull A\nv 1\0" "9 0 0\n"s);
+  ASSERT_FALSE(nul.value);
+  EXPECT_NE(nul.error.find("line 3"), std::string::npos) << nul.error;
+  EXPECT_NE(nul.error.find("\\x00"), std::string::npos) << nul.error;
+  const CaseParse escape = parse_case("manifuzz-case 1\n\x1b[31mred\n");
+  ASSERT_FALSE(escape.value);
+  EXPECT_EQ(escape.error.find('\x1b'), std::string::npos) << "a raw escape byte reached the message";
+}
+
 }  // namespace mfz

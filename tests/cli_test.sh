@@ -65,5 +65,112 @@ expect_one_line_error 'line 5' -- "$manifuzz" replay "$scratch/short_line.case"
 expect_one_line_error 'fewer than four' -- "$manifuzz" explain "$scratch/three_points.case"
 expect_one_line_error 'cannot load generator' -- "$manifuzz" replay --generator "$scratch/text.so" "$good"
 
+# ---- faults that once killed the harness or lost a finding (issue: verdicts that hold) ----
+check_that() {  # check_that DESCRIPTION CONDITION...: the condition (a command) must succeed
+  local what=$1
+  shift
+  checks=$((checks + 1))
+  if ! "$@"; then
+    failures=$((failures + 1))
+    printf 'FAILED: %s\n' "$what"
+  fi
+}
+face_case=$good  # a box on a box: a face contact, which the misbehaving plugins act on
+vertex_case=$source_dir/corpus/tetrahedron_tip_in_face.case  # one contact: the hanging plugin spins
+
+# gone PID: the process ends (or is a zombie left to a PID 1 that does not reap) within 3 s.
+gone() {
+  for _ in $(seq 30); do
+    [ -r "/proc/$1/stat" ] || return 0
+    [ "$(awk '{print $3}' "/proc/$1/stat" 2>/dev/null)" = Z ] && return 0
+    sleep 0.1
+  done
+  return 1
+}
+
+# A plugin's own output never reaches the harness's stdout.
+out=$("$manifuzz" check --generator "$plugin_dir/libmfz_test_printing.so" --cases 30 --seed 3 --out "$scratch/p" --quiet 2>/dev/null)
+check_that "a printing plugin leaves check's stdout empty" test -z "$out"
+out=$("$manifuzz" replay --json --generator "$plugin_dir/libmfz_test_printing.so" "$good" 2>/dev/null)
+check_that "replay --json prints JSON alone, even for a printing plugin" python3 -c 'import json,sys; json.loads(sys.argv[1])' "$out"
+out=$("$manifuzz" replay --json "$good" 2>/dev/null)
+check_that "replay --json prints JSON alone" python3 -c 'import json,sys; json.loads(sys.argv[1])' "$out"
+
+# A plugin that crashes, overflows its stack, hangs or exits is a finding in every command.
+for cmd in replay explain; do
+  expect 1 'crash|gave no answer' -- "$manifuzz" $cmd --generator "$plugin_dir/libmfz_test_crashing.so" "$face_case"
+  expect 1 'crash|gave no answer' -- "$manifuzz" $cmd --generator "$plugin_dir/libmfz_test_overflowing.so" "$face_case"
+  expect 1 'exit status 0' -- "$manifuzz" $cmd --generator "$plugin_dir/libmfz_test_exiting.so" "$face_case"
+  expect 1 'hang|no answer within' -- "$manifuzz" $cmd --call-timeout 0.3 --generator "$plugin_dir/libmfz_test_hanging.so" "$vertex_case"
+done
+expect 1 'VIOLATION crash ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_exiting.so" --cases 200 --seed 3 --out "$scratch/exit" --quiet
+
+# The worker dies with the harness, SIGKILL included, and takes the plugin's children with it.
+"$manifuzz" check --generator "$plugin_dir/libmfz_test_hanging.so" --cases 200 --seed 3 --call-timeout 60 \
+  --out "$scratch/kill" --quiet >/dev/null 2>&1 &
+harness=$!
+sleep 1.5
+workers=$(pgrep -P "$harness")
+kill -KILL "$harness"; wait "$harness" 2>/dev/null
+alive=""
+for w in $workers; do gone "$w" || alive="$alive $w"; done
+check_that "a SIGKILLed harness leaves no worker behind (workers:$workers; alive:$alive)" test -z "$alive"
+MFZ_TEST_CHILD_PID_FILE=$scratch/child.pid "$manifuzz" check --generator "$plugin_dir/libmfz_test_forking.so" \
+  --cases 20 --seed 3 --out "$scratch/fork" --quiet >/dev/null 2>&1
+child=$(cat "$scratch/child.pid" 2>/dev/null)
+check_that "a plugin's child process ends with the run (pid ${child:-none})" test -n "$child"
+[ -n "$child" ] && check_that "the plugin's child $child is gone" gone "$child"
+
+# Ctrl-C prints the summary so far.
+"$manifuzz" check --cases 1000000 --seed 3 --out "$scratch/int" >"$scratch/int.out" 2>&1 &
+harness=$!
+sleep 1.5
+kill -INT "$harness"; wait "$harness"; status=$?
+check_that "Ctrl-C ends check with status 130" test "$status" -eq 130
+check_that "Ctrl-C prints the summary so far" grep -q 'interrupted; the summary so far' "$scratch/int.out"
+
+# Findings are never lost or emptied.
+expect 2 'cannot (create|write)' -- "$manifuzz" check --cases 5 --out /proc/manifuzz-cannot-write
+expect 2 '--out needs a folder name' -- "$manifuzz" check --cases 5 --out ""
+"$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --cases 200 --seed 3 --out "$scratch/keep" --quiet >/dev/null 2>&1
+kept=$(ls "$scratch"/keep/*.case 2>/dev/null | head -1)
+before=$(cat "$kept" 2>/dev/null)
+expect 2 'cannot write into --out' -- bash -c "ulimit -f 0; exec '$manifuzz' check --generator '$plugin_dir/libmfz_test_crashing.so' --cases 200 --seed 3 --out '$scratch/keep' --quiet"
+check_that "a full disk leaves the earlier case as it was" test -n "$before" -a "$before" = "$(cat "$kept")"
+check_that "a full disk leaves no empty case file" test -z "$(find "$scratch/keep" -name '*.case' -empty)"
+
+# --seconds covers shrinking.
+start=$(date +%s)
+"$manifuzz" check --generator "$plugin_dir/libmanifuzz_tutorial.so" --seconds 2 --seed 1 --out "$scratch/sec" --quiet >/dev/null 2>&1
+check_that "check --seconds 2 ends within 6 s, shrinking included ($(( $(date +%s) - start )) s)" test $(( $(date +%s) - start )) -le 6
+
+# A relation finding replays as a finding.
+"$manifuzz" check --generator "$plugin_dir/libmfz_mutant_swapped_pair.so" --cases 300 --seed 3 --out "$scratch/rel" --quiet >/dev/null 2>&1
+relation_case=$(ls "$scratch"/rel/*.case 2>/dev/null | head -1)
+expect 1 'VIOLATION swap-symmetry ' -- "$manifuzz" replay --generator "$plugin_dir/libmfz_mutant_swapped_pair.so" "$relation_case"
+expect 0 'verdict pass' -- "$manifuzz" replay "$relation_case"
+
+# Bad input: one line, status 2.
+awk '/^pose B/ {print "pose B  0 0 0.9  1e154 1e154 0 0"; next} {print}' "$good" >"$scratch/huge_quat.case"
+awk '/^pose B/ {print "pose B  0 0 0.9  1e-160 1e-160 0 0"; next} {print}' "$good" >"$scratch/tiny_quat.case"
+awk '/^pose B/ {print "pose B  0 0 0.9  1 1 0 0"; next} {print}' "$good" >"$scratch/plain_quat.case"
+plain=$("$manifuzz" replay --json "$scratch/plain_quat.case" | sed 's/"file":"[^"]*"//')
+check_that "a quaternion near 1e154 is the same rotation" test "$plain" = "$("$manifuzz" replay --json "$scratch/huge_quat.case" | sed 's/"file":"[^"]*"//')"
+check_that "a quaternion near 1e-160 is the same rotation" test "$plain" = "$("$manifuzz" replay --json "$scratch/tiny_quat.case" | sed 's/"file":"[^"]*"//')"
+awk '/^pose B/ {print "pose B  1e16 0 0.9  1 0 0 0"; next} /^pose A/ {print "pose A  1e16 0 0  1 0 0 0"; next} {print}' "$good" >"$scratch/far.case"
+expect_one_line_error 'from the origin' -- "$manifuzz" replay "$scratch/far.case"
+{ echo "manifuzz-case 1"; echo "hull A"; for i in $(seq 1 1100); do echo "v $i $((i * i % 97)) $((i % 13))"; done
+  echo "pose A 0 0 0 1 0 0 0"; echo "hull B"; echo "v 0 0 0"; echo "v 1 0 0"; echo "v 0 1 0"; echo "v 0 0 1"; echo "pose B 0 0 0 1 0 0 0"; } >"$scratch/many.case"
+expect_one_line_error 'more than 1024 points' -- "$manifuzz" replay "$scratch/many.case"
+expect_one_line_error 'larger than' -- timeout 10 "$manifuzz" replay /dev/zero
+printf 'manifuzz-case 1\nhull A\nv 0 0 0\nv 1\0009 0 0\n' >"$scratch/nul.case"
+expect_one_line_error 'line 4:.*not a number' -- "$manifuzz" replay "$scratch/nul.case"
+printf 'manifuzz-case 1\n\033[31mred\n' >"$scratch/escape.case"
+err=$("$manifuzz" replay "$scratch/escape.case" 2>&1 >/dev/null)
+check_that "control bytes of the input are escaped in messages" sh -c "printf '%s' '$err' | grep -q 'x1b' && ! printf '%s' '$err' | grep -q \"\$(printf '\\033')\""
+expect_one_line_error 'call-timeout takes' -- "$manifuzz" check --call-timeout 0.0005 --cases 5
+manifuzz_path=$(cd "$(dirname "$manifuzz")" && pwd)/$(basename "$manifuzz")
+expect 0 'verdict pass' -- sh -c "cd '$plugin_dir' && '$manifuzz_path' replay --generator libmanifuzz_clipping.so '$good'"
+
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

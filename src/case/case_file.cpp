@@ -13,8 +13,10 @@
 
 namespace mfz {
 
-std::string quoted(std::string_view text, size_t limit) {
-  std::string out = "'";
+std::string quoted(std::string_view text, size_t limit) { return "'" + printable(text, limit) + "'"; }
+
+std::string printable(std::string_view text, size_t limit) {
+  std::string out;
   for (const char c : text.substr(0, limit)) {
     const auto byte = static_cast<unsigned char>(c);
     if (byte < 0x20 || byte == 0x7f) {
@@ -25,7 +27,7 @@ std::string quoted(std::string_view text, size_t limit) {
       out += c;
     }
   }
-  return out + (text.size() > limit ? "...'" : "'");
+  return out + (text.size() > limit ? "..." : "");
 }
 
 namespace {

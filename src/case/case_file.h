@@ -28,6 +28,8 @@ inline constexpr size_t kMaxPointsPerHull = 1024;
 /// `text` in single quotes for a one-line message: control bytes as \xNN,
 /// at most `limit` characters, so that input never breaks a message's line.
 std::string quoted(std::string_view text, size_t limit = 64);
+/// The same without the quotes.
+std::string printable(std::string_view text, size_t limit = 64);
 
 /// A case as written: points and poses exactly as read (the quaternion is not
 /// normalised here; `Scene` does that).

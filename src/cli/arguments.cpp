@@ -44,6 +44,14 @@ std::optional<long long> parse_count(const std::string& text, long long low, lon
   return v;
 }
 
+std::optional<double> call_timeout(const Arguments& args, std::string& error) {
+  if (!args.options.count("--call-timeout")) return 5.0;
+  const auto t = parse_seconds(args.get("--call-timeout", ""));
+  if (t && *t >= kShortestCallTimeout) return t;
+  error = "--call-timeout takes a number of seconds >= 0.05";
+  return std::nullopt;
+}
+
 std::optional<double> parse_seconds(const std::string& text) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);

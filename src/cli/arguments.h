@@ -34,6 +34,13 @@ std::optional<Arguments> parse_arguments(const std::vector<std::string>& words, 
 
 /// A whole number in [low, high], or nullopt.
 std::optional<long long> parse_count(const std::string& text, long long low, long long high);
+/// The per-call limit for a plugin: --call-timeout if given, else 5 s;
+/// nullopt and a one-line `error` for a value below kShortestCallTimeout.
+std::optional<double> call_timeout(const Arguments& args, std::string& error);
+/// The shortest per-call limit --call-timeout accepts (seconds): below it a
+/// correct generator's ordinary call (a 64-gon, a loaded machine) reads as a hang.
+inline constexpr double kShortestCallTimeout = 0.05;
+
 /// A finite number >= 0, or nullopt.
 std::optional<double> parse_seconds(const std::string& text);
 

@@ -12,8 +12,7 @@ namespace mfz::cli {
 
 /// Without --cases or --seconds the check runs this many cases: the main job's budget.
 constexpr long long kDefaultCases = 20000;
-/// The shortest per-call limit --call-timeout accepts (seconds).
-constexpr double kShortestCallTimeout = 0.05;
+
 
 int check_command(const std::vector<std::string>& words) {
   std::string error;
@@ -45,14 +44,8 @@ int check_command(const std::vector<std::string>& words) {
   } else {
     options.seed = std::random_device{}() % 1000000000;
   }
-  if (args->options.count("--call-timeout")) {
-    const auto t = parse_seconds(args->get("--call-timeout", ""));
-    // Below this a correct generator's ordinary call (a 64-gon, a loaded
-    // machine) would read as a hang.
-    if (!t || *t < kShortestCallTimeout)
-      return usage("--call-timeout takes a number of seconds >= " + std::to_string(kShortestCallTimeout).substr(0, 4));
-    options.call_timeout = *t;
-  }
+  if (const auto timeout = call_timeout(*args, error)) options.call_timeout = *timeout;
+  else return usage(error);
   if (args->options.count("--only")) {
     // A misspelt name would check nothing and pass: refuse it.
     const std::string only = args->get("--only", "");

@@ -119,14 +119,15 @@ bool named_relation(const CaseFile& c) {
 // built-in's steps re-runs the built-in in process with a trace.
 int explain_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator"}, {"--strict"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout"}, {"--strict"}, error);
   if (!args || args->positional.size() != 1) {
     std::cerr << "manifuzz explain: " << (args ? "expected exactly one case file" : error)
               << " (usage: manifuzz explain [--generator G] [--strict] FILE)\n";
     return kExitInputError;
   }
   const std::string spec = args->get("--generator", "builtin");
-  const auto session = open_session(spec, 5, error);
+  std::unique_ptr<GeneratorSession> session = nullptr;
+  if (const auto timeout = call_timeout(*args, error)) session = open_session(spec, *timeout, error);
   if (!session) {
     std::cerr << "manifuzz explain: " << error << "\n";
     return kExitInputError;
@@ -146,7 +147,7 @@ int explain_command(const std::vector<std::string>& words) {
   const props::Finding* finding = outcome->finding ? &*outcome->finding : nullptr;
   std::ostream& out = std::cout;
   out << "Case " << file << "\n";
-  for (const std::string& line : parsed.value->extensions) out << "  " << quoted(line, 4096) << "\n";
+  for (const std::string& line : parsed.value->extensions) out << "  " << printable(line, 4096) << "\n";
   if (!outcome->manifold) {
     out << "\nThe generator " << session->name() << " gave no answer: " << finding->name << " (" << finding->detail
         << ").\n";

@@ -58,7 +58,9 @@ int replay_command(const std::vector<std::string>& words) {
               << " (usage: manifuzz replay [--generator G] [--json] [--strict] FILE...)\n";
     return kExitInputError;
   }
-  const auto session = open_session(args->get("--generator", "builtin"), 5, error);
+  std::unique_ptr<GeneratorSession> session = nullptr;
+  if (const auto timeout = call_timeout(*args, error))
+    session = open_session(args->get("--generator", "builtin"), *timeout, error);
   if (!session) {
     std::cerr << "manifuzz replay: " << error << "\n";
     return kExitInputError;
