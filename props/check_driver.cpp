@@ -60,7 +60,16 @@ std::string count_bucket(int n) {
   return n <= 8 ? "5-8" : (n <= 16 ? "9-16" : "17+");
 }
 
+// The exact depth in units of L by decade, from one ulp to past half of L.
+std::string depth_decade(double depth_over_l) {
+  if (!(depth_over_l > 0)) return "apart or touching";
+  if (depth_over_l >= 0.5) return ">=0.5";
+  const int decade = std::max(-16, static_cast<int>(std::floor(std::log10(depth_over_l))));
+  return "1e" + std::to_string(decade);
+}
+
 void record(Statistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
+  stats.count("depth (x L)", depth_decade(o.tags.depth_over_l));
   stats.count("hull family A", g.hull_a);
   stats.count("placement", g.placement);
   stats.count("overlap", g.overlap);

@@ -233,15 +233,26 @@ Quat tilt_about(const Vec3& n, std::string& name) {
 }
 
 // How far B reaches into A along the placement direction, in units of the
-// smaller hull's size.
+// smaller hull's size. Shallow overlaps draw their decade uniformly, from
+// 1e-15 to 0.9 of the size, so that a bug living at one depth is as likely
+// to be met as any other; concentric ones put B's centre near A's (a body
+// spawned inside another), the deepest overlaps there are.
 double any_overlap(double small_size, std::string& name) {
-  switch (pick(0, 4)) {
-    case 0: name = "shallow"; return pick(1, 50) / 1000.0 * small_size;
+  switch (pick(0, 5)) {
+    case 0: name = "shallow"; return pick(1, 9) * std::pow(10.0, -pick(1, 15)) * small_size;
     case 1: name = "touching"; return 0;
     case 2: name = "one-ulp"; return std::nextafter(small_size, INFINITY) - small_size;
     case 3: name = "separated"; return -pick(1, 1000) * 1e-9 * small_size;
+    case 4: name = "concentric"; return 0;
     default: name = "deep"; return pick(50, 150) / 100.0 * small_size;
   }
+}
+
+// A concentric case: B's centre at A's, off by up to a tenth of the size.
+void make_concentric(const Placed& a, Placed& b, double size) {
+  const Vec3 off = digit_vector(10);
+  const Vec3 offset = off.isZero() ? Vec3(Vec3::Zero()) : Vec3(off.normalized() * (pick(0, 10) / 100.0 * size));
+  b.pose.position = a.pose.to_world(centroid(a.hull)) - b.pose.rotate(centroid(b.hull)) + offset;
 }
 
 // How far B must move along -d, from where it is, to touch A: the entry of
@@ -353,7 +364,14 @@ void scale_points(std::vector<Vec3>& points, double s) {
 }
 
 // Orients and places B against A by the named placement.
+void place_by(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out);
+
 void place(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out) {
+  place_by(placement, a, b, out);
+  if (out.overlap == "concentric") make_concentric(a, b, std::min(a.hull.diameter(), b.hull.diameter()));
+}
+
+void place_by(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out) {
   a.pose.orientation = any_rotation();
   const double size = std::min(a.hull.diameter(), b.hull.diameter());
   const double overlap = any_overlap(size / 2, out.overlap);

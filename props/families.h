@@ -18,7 +18,7 @@ struct GeneratedCase {
   CaseFile file;
   std::string hull_a, hull_b;  ///< hull family of each
   std::string placement;       ///< face-on-face, edge-edge, ...
-  std::string overlap;         ///< shallow, touching, one-ulp, separated, deep
+  std::string overlap;         ///< shallow (1e-15 .. 0.9 of the size), touching, one-ulp, separated, deep, concentric
   std::string tilt;            ///< exact, 1e-15, ..., degrees
   std::string frame;           ///< origin, far-1e3 ... far-1e6
   std::string scale;           ///< unit, small, large, ratio
