@@ -65,16 +65,18 @@ void describe_clipping(std::ostream& out, const CaseRun& run) {
   }
   const Vec3 na = run.scene.pose_a.rotate(run.scene.hull_a.face_normal(trace.face_a));
   const Vec3 nb = run.scene.pose_b.rotate(run.scene.hull_b.face_normal(trace.face_b));
-  out << "\n3. Significant faces: the vertex furthest along n, and of its faces the one most parallel.\n"
+  out << "\n3. Significant faces: on a face axis the SAT face; otherwise, of the faces holding the most of the\n"
+      << "   vertices furthest along n, the one most parallel to it.\n"
       << "     A: vertex " << trace.support_a << ", face " << trace.face_a << " with normal " << vec_text(na)
       << ", |n . normal| = " << std::abs(sat.normal.dot(na)) << "\n"
       << "     B (along -n): vertex " << trace.support_b << ", face " << trace.face_b << " with normal " << vec_text(nb)
       << ", |n . normal| = " << std::abs(sat.normal.dot(nb)) << "\n"
-      << "   The more parallel one is the reference face: " << (trace.flipped ? "B's" : "A's") << " face "
+      << "   The reference face (the SAT face, or the more parallel one): " << (trace.flipped ? "B's" : "A's") << " face "
       << (trace.flipped ? trace.face_b : trace.face_a) << "; the incident face is " << (trace.flipped ? "A's" : "B's")
       << " face " << (trace.flipped ? trace.face_a : trace.face_b) << (trace.flipped ? " (flipped)" : "") << ".\n";
-  out << "\n4. Sutherland-Hodgman clipping of the incident face against the planes of the faces next to the\n"
-      << "   reference face, then removal of the points above the reference plane:\n";
+  out << "\n4. Sutherland-Hodgman clipping of each equally aligned incident face against the sides of the\n"
+      << "   prism over the reference face (the largest coplanar patch around it), then removal of the\n"
+      << "   points above the reference plane:\n";
   for (size_t k = 0; k < trace.steps.size(); ++k) {
     out << "     step " << k << ": " << trace.steps[k].what << " (" << trace.steps[k].polygon.size() << " points)\n";
     describe_polygon(out, trace.steps[k].polygon);

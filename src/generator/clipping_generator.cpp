@@ -258,15 +258,30 @@ ClippingSteps tutorial_steps() {
   return steps;
 }
 
-// Outline, after the tutorial's CollisionDetectionSAT::GenContactPoints:
-//  1. SAT gives the normal n (A to B) and the depth; no contacts unless p < 0.
-//  2. Significant faces: A's along n, B's along -n.
-//  3. The one more parallel to n is the reference face, the other incident
-//     ("flipped" when the reference face is B's).
-//  4. Clip the incident face against the planes of the faces adjacent to the
-//     reference face (Sutherland-Hodgman).
-//  5. Remove the points above the reference plane.
-//  6. Each remaining point is a contact with its own penetration.
+// Outline of the built-in generator (the tutorial's GenContactPoints, with
+// the fixes FINDINGS.md names), in a frame centred on A's position (F21):
+//  1. SAT (face normals, then the edge pairs whose Gauss arcs cross) gives
+//     the normal n, from A to B, and the depth. A face axis wins a near-tie
+//     with an edge axis (F3, F9); a reversed face axis only proves separation
+//     (F7). No contacts unless p < 0.
+//  2. On an edge-edge axis, every crossing pair of supporting edges is one
+//     contact (F3, F6, F12, F20, F22); done.
+//  3. Significant faces, A's along n and B's along -n. On a face axis, that
+//     face is its hull's (F8). Otherwise, of the faces holding the most of
+//     the support vertices (F10, F24), the most parallel one.
+//  4. The SAT face is the reference face (F13, F14), the other incident
+//     ("flipped" when the reference face is B's). Each stands for the largest
+//     patch of coplanar faces around it (F2).
+//  5. Every incident face equally aligned (F11, F15) is clipped
+//     (Sutherland-Hodgman) against the sides of the prism over the reference
+//     face (F1), with a band for edges lying in a side (F23). Then the points
+//     above the reference plane are removed, and tied faces' shared points
+//     are kept once (F19).
+//  6. Each remaining point is a contact with its own penetration, measured
+//     from the reference polygon along n.
+//  7. Nothing left at a positive depth: the crossing supporting edges (F16),
+//     then the deepest vertex inside the reference hull paired with where a
+//     ray along n leaves it (F17, F18).
 namespace {
 
 int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_hull& hull_b, const Pose& pose_b,

@@ -21,14 +21,6 @@ const char* status_name(CheckStatus status) {
   return "?";
 }
 
-const std::vector<std::string>& invariant_names() {
-  static const std::vector<std::string> names = {
-      "finite",         "unit-normal",   "negative-penetration",    "pair-consistency",      "on-surface",
-      "within-both-hulls", "has-contacts", "agrees-with-gjk",       "depth-exact",           "depth-within-epa-bounds",
-      "normal-agrees-with-epa", "normal-realises-depth", "separates", "spans-contact-region"};
-  return names;
-}
-
 const InvariantCheck* Verdict::first_violation() const {
   for (const InvariantCheck& c : checks)
     if (c.status == CheckStatus::fail) return &c;
@@ -57,12 +49,13 @@ struct Context {
   Vec3 on_b(int i) const { return to_vec(m.contacts[i].point_on_b); }
 };
 
-InvariantCheck measured(const char* name, double error, double tolerance, std::string detail = {}) {
+// The checks leave the name to the table below (kInvariants).
+InvariantCheck measured(double error, double tolerance, std::string detail = {}) {
   const bool ok = error <= tolerance;  // a NaN error fails
-  return {name, ok ? CheckStatus::pass : CheckStatus::fail, error, tolerance, std::move(detail)};
+  return {{}, ok ? CheckStatus::pass : CheckStatus::fail, error, tolerance, std::move(detail)};
 }
 
-InvariantCheck skipped(const char* name, std::string why) { return {name, CheckStatus::skipped, 0, 0, std::move(why)}; }
+InvariantCheck skipped(std::string why) { return {{}, CheckStatus::skipped, 0, 0, std::move(why)}; }
 
 // printf-style, for the one-line details: a stream per check cost more than
 // the checks' arithmetic.
@@ -81,26 +74,26 @@ std::string describe(const char* what, int contact) {
 // a contact count outside 0..64. Both mean garbage came back.
 InvariantCheck check_finite(const Context& c) {
   const mfz_manifold& m = c.m;
-  if (m.colliding != 0 && m.colliding != 1) return measured("finite", 1, 0, "colliding is " + std::to_string(m.colliding));
+  if (m.colliding != 0 && m.colliding != 1) return measured(1, 0, "colliding is " + std::to_string(m.colliding));
   if (m.contact_count < 0 || m.contact_count > MFZ_MAX_CONTACTS)
-    return measured("finite", 1, 0, "contact_count is " + std::to_string(m.contact_count));
+    return measured(1, 0, "contact_count is " + std::to_string(m.contact_count));
   if (m.colliding == 1 && (!to_vec(m.normal).allFinite() || !std::isfinite(m.penetration)))
-    return measured("finite", 1, 0, "normal or penetration is not finite");
+    return measured(1, 0, "normal or penetration is not finite");
   for (int i = 0; i < m.contact_count; ++i)
     if (!c.on_a(i).allFinite() || !c.on_b(i).allFinite() || !std::isfinite(m.contacts[i].penetration))
-      return measured("finite", 1, 0, describe("a contact field is not finite", i));
-  return measured("finite", 0, 0);
+      return measured(1, 0, describe("a contact field is not finite", i));
+  return measured(0, 0);
 }
 
 InvariantCheck check_unit_normal(const Context& c) {
-  if (!c.colliding) return skipped("unit-normal", "not colliding");
-  return measured("unit-normal", std::abs(c.n.norm() - 1), tol::kUnitNormal);
+  if (!c.colliding) return skipped("not colliding");
+  return measured(std::abs(c.n.norm() - 1), tol::kUnitNormal);
 }
 
 // Touching cases may report p or p_i a rounding error above zero. Elsewhere
 // p_i < 0 is strict: a contact with p_i = 0 fails however small its error.
 InvariantCheck check_negative_penetration(const Context& c) {
-  if (!c.colliding) return skipped("negative-penetration", "not colliding");
+  if (!c.colliding) return skipped("not colliding");
   const double tol = c.scene.length_tolerance(tol::kDepth);
   const double ceiling = c.oracles.touching ? tol : 0;
   double worst = std::max(0.0, c.m.penetration - ceiling);
@@ -116,7 +109,7 @@ InvariantCheck check_negative_penetration(const Context& c) {
       if (err >= worst) worst = err, at = i;
     }
   }
-  InvariantCheck check{"negative-penetration", broken ? CheckStatus::fail : CheckStatus::pass, c.relative(worst),
+  InvariantCheck check{{}, broken ? CheckStatus::fail : CheckStatus::pass, c.relative(worst),
                        c.relative(tol), describe("p <= 0 and p - tol <= p_i < 0", at)};
   return check;
 }
@@ -124,25 +117,25 @@ InvariantCheck check_negative_penetration(const Context& c) {
 // The point checks: each contact's error (a length), the worst against
 // tol::kPoint, naming the contact that gave it.
 template <class ErrorOf>
-InvariantCheck worst_contact(const Context& c, const char* name, const char* what, ErrorOf&& error_of) {
-  if (c.m.contact_count == 0) return skipped(name, "no contacts");
+InvariantCheck worst_contact(const Context& c, const char* what, ErrorOf&& error_of) {
+  if (c.m.contact_count == 0) return skipped("no contacts");
   double worst = 0;
   int at = -1;
   for (int i = 0; i < c.m.contact_count; ++i)
     if (const double err = error_of(i); err > worst || std::isnan(err)) worst = err, at = i;
   const double tol = c.scene.length_tolerance(tol::kPoint);
-  return measured(name, c.relative(worst), c.relative(tol), describe(what, at));
+  return measured(c.relative(worst), c.relative(tol), describe(what, at));
 }
 
 InvariantCheck check_pair_consistency(const Context& c) {
-  return worst_contact(c, "pair-consistency", "|b - (a + p_i n)|", [&](int i) {
+  return worst_contact(c, "|b - (a + p_i n)|", [&](int i) {
     return (c.on_b(i) - (c.on_a(i) + c.m.contacts[i].penetration * c.n)).norm();
   });
 }
 
 InvariantCheck check_on_surface(const Context& c) {
   const Scene& s = c.scene;
-  return worst_contact(c, "on-surface", "distance to own surface", [&](int i) {
+  return worst_contact(c, "distance to own surface", [&](int i) {
     return std::max(std::abs(signed_distance(s.hull_a, s.pose_a, c.on_a(i))),
                     std::abs(signed_distance(s.hull_b, s.pose_b, c.on_b(i))));
   });
@@ -152,7 +145,7 @@ InvariantCheck check_on_surface(const Context& c) {
 // tolerance serves both the own-hull and the other-hull bound.
 InvariantCheck check_within_both_hulls(const Context& c) {
   const Scene& s = c.scene;
-  return worst_contact(c, "within-both-hulls", "outside allowed by", [&](int i) {
+  return worst_contact(c, "outside allowed by", [&](int i) {
     const double slack = std::abs(c.m.contacts[i].penetration);
     return std::max({signed_distance(s.hull_a, s.pose_a, c.on_a(i)), signed_distance(s.hull_b, s.pose_b, c.on_b(i)),
                      signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
@@ -162,42 +155,42 @@ InvariantCheck check_within_both_hulls(const Context& c) {
 
 InvariantCheck check_has_contacts(const Context& c) {
   const double tol = c.scene.length_tolerance(tol::kDepth);
-  if (!c.colliding || !(c.depth > tol)) return skipped("has-contacts", "not colliding deeper than tol");
-  return measured("has-contacts", c.m.contact_count >= 1 ? 0 : c.relative(c.depth), c.relative(tol),
+  if (!c.colliding || !(c.depth > tol)) return skipped("not colliding deeper than tol");
+  return measured(c.m.contact_count >= 1 ? 0 : c.relative(c.depth), c.relative(tol),
                   c.m.contact_count >= 1 ? "" : "colliding, no contacts");
 }
 
 InvariantCheck check_agrees_with_gjk(const Context& c) {
   const OracleAnswers& o = c.oracles;
-  if (o.touching) return skipped("agrees-with-gjk", "touching: either answer passes");
+  if (o.touching) return skipped("touching: either answer passes");
   if (o.ccd.gjk_intersecting != o.exact.colliding)
-    return {"agrees-with-gjk", CheckStatus::oracle_disagreement, 0, 0,
+    return {{}, CheckStatus::oracle_disagreement, 0, 0,
             std::string("GJK says ") + (o.ccd.gjk_intersecting ? "intersecting" : "separate") +
                 ", the exact oracle says " + (o.exact.colliding ? "intersecting" : "separate")};
   const bool agree = c.colliding == o.ccd.gjk_intersecting;
-  return measured("agrees-with-gjk", agree ? 0 : c.relative(std::abs(o.exact.signed_depth)),
+  return measured(agree ? 0 : c.relative(std::abs(o.exact.signed_depth)),
                   c.relative(c.scene.length_tolerance(tol::kTouching)),
                   agree ? "" : (c.colliding ? "colliding, but GJK and the exact oracle say separate"
                                             : "not colliding, but GJK and the exact oracle say intersecting"));
 }
 
 InvariantCheck check_depth_exact(const Context& c) {
-  if (!c.colliding) return skipped("depth-exact", "not colliding");
+  if (!c.colliding) return skipped("not colliding");
   const double tol = c.scene.length_tolerance(tol::kDepth);
-  return measured("depth-exact", c.relative(std::abs(c.depth - c.oracles.exact.signed_depth)), c.relative(tol),
+  return measured(c.relative(std::abs(c.depth - c.oracles.exact.signed_depth)), c.relative(tol),
                   text("depth %g, exact %g", c.depth, c.oracles.exact.signed_depth));
 }
 
 InvariantCheck check_depth_within_epa_bounds(const Context& c) {
   const OracleAnswers& o = c.oracles;
-  if (!c.colliding || !o.ccd.epa_ok) return skipped("depth-within-epa-bounds", "not colliding, or EPA did not run");
+  if (!c.colliding || !o.ccd.epa_ok) return skipped("not colliding, or EPA did not run");
   const double tol_epa = c.scene.length_tolerance(tol::kEpa);
   if (o.ccd.epa_depth > o.exact.signed_depth + tol_epa)
-    return {"depth-within-epa-bounds", CheckStatus::oracle_disagreement, c.relative(o.ccd.epa_depth - o.exact.signed_depth),
+    return {{}, CheckStatus::oracle_disagreement, c.relative(o.ccd.epa_depth - o.exact.signed_depth),
             c.relative(tol_epa), "EPA's depth exceeds the exact depth"};
   const double upper = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
   const double err = std::max({0.0, o.ccd.epa_depth - c.depth, c.depth - upper});
-  return measured("depth-within-epa-bounds", c.relative(err), c.relative(tol_epa),
+  return measured(c.relative(err), c.relative(tol_epa),
                   text("EPA %g <= depth %g <= %g", o.ccd.epa_depth, c.depth, upper));
 }
 
@@ -205,16 +198,16 @@ InvariantCheck check_normal_agrees_with_epa(const Context& c) {
   const OracleAnswers& o = c.oracles;
   const double tol_epa = c.scene.length_tolerance(tol::kEpa);
   if (!c.colliding || !o.ccd.epa_ok || std::abs(o.ccd.epa_depth - o.exact.signed_depth) > tol_epa)
-    return skipped("normal-agrees-with-epa", "EPA's depth is not the exact depth");
+    return skipped("EPA's depth is not the exact depth");
   // At zero depth every direction realises the depth, so EPA's is arbitrary.
-  if (o.touching) return skipped("normal-agrees-with-epa", "touching: EPA's direction is arbitrary");
+  if (o.touching) return skipped("touching: EPA's direction is arbitrary");
   const double angle = std::acos(std::clamp(c.n.normalized().dot(o.ccd.epa_direction), -1.0, 1.0));
-  if (angle <= tol::kEpaAngle) return measured("normal-agrees-with-epa", angle, tol::kEpaAngle, "angle to EPA (rad)");
+  if (angle <= tol::kEpaAngle) return measured(angle, tol::kEpaAngle, "angle to EPA (rad)");
   // EPA's direction is only an oracle where it realises the exact depth
   // itself: at small depths its depth can be right and its direction not.
   const double along_epa = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
   if (std::abs(along_epa - o.exact.signed_depth) > tol_epa) {
-    return {"normal-agrees-with-epa", CheckStatus::oracle_disagreement, c.relative(std::abs(along_epa - o.exact.signed_depth)),
+    return {{}, CheckStatus::oracle_disagreement, c.relative(std::abs(along_epa - o.exact.signed_depth)),
             c.relative(tol_epa),
             text("EPA's direction does not realise the exact depth: overlap along it %g, exact depth %g", along_epa,
                  o.exact.signed_depth)};
@@ -222,15 +215,15 @@ InvariantCheck check_normal_agrees_with_epa(const Context& c) {
   // A tie: both axes are minimal, EPA's and n, each realising the depth.
   const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
   const double err = std::max(std::abs(along_epa - c.depth), std::abs(along_n - c.depth));
-  return measured("normal-agrees-with-epa", c.relative(err), c.relative(tol_epa),
+  return measured(c.relative(err), c.relative(tol_epa),
                   text("angle to EPA %g rad; overlap along EPA's direction %g, along n %g, depth %g", angle, along_epa,
                        along_n, c.depth));
 }
 
 InvariantCheck check_normal_realises_depth(const Context& c) {
-  if (!c.colliding) return skipped("normal-realises-depth", "not colliding");
+  if (!c.colliding) return skipped("not colliding");
   const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
-  return measured("normal-realises-depth", c.relative(std::abs(along_n - c.depth)),
+  return measured(c.relative(std::abs(along_n - c.depth)),
                   c.relative(c.scene.length_tolerance(tol::kDepth)), text("overlap along n %g, depth %g", along_n, c.depth));
 }
 
@@ -239,7 +232,7 @@ InvariantCheck check_normal_realises_depth(const Context& c) {
 // (every candidate axis, both ways for edge pairs); GJK is asked too.
 InvariantCheck check_separates(const Context& c) {
   const OracleAnswers& o = c.oracles;
-  if (!c.colliding) return skipped("separates", "not colliding");
+  if (!c.colliding) return skipped("not colliding");
   const double tol = c.scene.length_tolerance(tol::kSeparates);
   const Vec3 n = c.n.normalized();
   const Vec3 beyond = (c.depth + tol) * n;
@@ -254,9 +247,9 @@ InvariantCheck check_separates(const Context& c) {
     gjk_disagrees = err == 0 && !libccd_intersecting(c.scene, short_of);
   }
   if (err == 0 && gjk_disagrees)
-    return {"separates", CheckStatus::oracle_disagreement, 0, c.relative(tol),
+    return {{}, CheckStatus::oracle_disagreement, 0, c.relative(tol),
             "the exact test and GJK disagree at depth +- tol"};
-  return measured("separates", c.relative(err), 0.0, err > 0 ? what : "");
+  return measured(c.relative(err), 0.0, err > 0 ? what : "");
 }
 
 // Completeness: where the region is well defined, the contacts projected
@@ -268,12 +261,11 @@ InvariantCheck check_separates(const Context& c) {
 // The tolerance grows with how far the centroid drifts on the way to
 // touching (tolerances.h).
 InvariantCheck check_spans_contact_region(const Context& c) {
-  const char* name = "spans-contact-region";
   const double tol = c.scene.length_tolerance(tol::kPoint);
   const double depth = c.oracles.exact.signed_depth;
   if (!c.colliding || !(depth > c.scene.length_tolerance(tol::kDepth)) || c.m.contact_count == 0)
-    return skipped(name, "not colliding deeper than tol, or no contacts");
-  if (!c.oracles.face_contact) return skipped(name, "the hulls first touch at crossing edges: a point");
+    return skipped("not colliding deeper than tol, or no contacts");
+  if (!c.oracles.face_contact) return skipped("the hulls first touch at crossing edges: a point");
   const Vec3 n = c.n.normalized();
   // A first-touching feature spread over two faces of one hull (a face folded
   // by less than the depth's 1%) is the contract's folded-face tie: the
@@ -281,11 +273,11 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   const double window = (1 - tol::kRegionFirstTouch) * depth + tol;
   if (!support_on_one_face(c.scene.hull_a, c.scene.world_a, n, window) ||
       !support_on_one_face(c.scene.hull_b, c.scene.world_b, -n, window))
-    return skipped(name, "a hull first touches with a folded face: a tie");
+    return skipped("a hull first touches with a folded face: a tie");
   const double first = tol::kRegionFirstTouch, halfway = (1 + tol::kRegionFirstTouch) / 2;
   const ContactRegion region = contact_region(c.scene, n, first * depth * n, tol);
   if (region.empty || !(depth <= tol::kThinRegion * region.width))
-    return skipped(name, "not a shallow contact: the hulls' intersection is not thin along n");
+    return skipped("not a shallow contact: the hulls' intersection is not thin along n");
   const ContactRegion closer = contact_region(c.scene, n, halfway * depth * n, tol);
   const double drift = closer.empty ? INFINITY : (region.centroid - closer.centroid).norm();
   Vec3 u, v;
@@ -293,38 +285,70 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   std::vector<Eigen::Vector2d> contacts;
   for (int i = 0; i < c.m.contact_count; ++i) contacts.emplace_back(u.dot(c.on_a(i)), v.dot(c.on_a(i)));
   const double off = distance_to_convex_hull_2d(region.centroid, contacts);
-  return measured(name, c.relative(off), c.relative(tol + tol::kRegionDrift * drift),
+  return measured(c.relative(off), c.relative(tol + tol::kRegionDrift * drift),
                   text("region's centroid %g outside the contacts' hull; region width %g, drift %g", off,
                        region.width, drift));
 }
 
-}  // namespace
+struct InvariantRow {
+  const char* name;
+  InvariantCheck (*check)(const Context&);
+  /// Needs no oracle of its own beyond the exact depth: a relation's
+  /// transformed run is held to it too.
+  bool transformed_runs;
+};
 
-Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& m) {
+// The invariants in the contract's order: one table gives the names, the
+// order and the dispatch.
+constexpr InvariantRow kInvariants[] = {
+    {"finite", check_finite, true},
+    {"unit-normal", check_unit_normal, true},
+    {"negative-penetration", check_negative_penetration, true},
+    {"pair-consistency", check_pair_consistency, true},
+    {"on-surface", check_on_surface, true},
+    {"within-both-hulls", check_within_both_hulls, true},
+    {"has-contacts", check_has_contacts, true},
+    {"agrees-with-gjk", check_agrees_with_gjk, false},
+    {"depth-exact", check_depth_exact, true},
+    {"depth-within-epa-bounds", check_depth_within_epa_bounds, false},
+    {"normal-agrees-with-epa", check_normal_agrees_with_epa, false},
+    {"normal-realises-depth", check_normal_realises_depth, true},
+    {"separates", check_separates, false},
+    {"spans-contact-region", check_spans_contact_region, true},
+};
+
+// Runs the rows that `wanted` selects; after a failed `finite` the rest are
+// skipped, since they would read garbage.
+template <class Wanted>
+Verdict run_rows(const Context& c, int32_t status, Wanted&& wanted) {
   Verdict v;
   v.generator_status = status;
   if (status != 0) return v;
-  const Context c{scene, oracles, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
-  v.checks.push_back(check_finite(c));
-  if (v.checks.back().status == CheckStatus::fail) {
-    for (size_t k = 1; k < invariant_names().size(); ++k)
-      v.checks.push_back(skipped(invariant_names()[k].c_str(), "output not finite"));
-    return v;
+  bool garbage = false;
+  for (const InvariantRow& row : kInvariants) {
+    if (!wanted(row)) continue;
+    InvariantCheck check = garbage ? skipped("output not finite") : row.check(c);
+    check.name = row.name;
+    garbage = garbage || (check.status == CheckStatus::fail && check.name == "finite");
+    v.checks.push_back(std::move(check));
   }
-  v.checks.push_back(check_unit_normal(c));
-  v.checks.push_back(check_negative_penetration(c));
-  v.checks.push_back(check_pair_consistency(c));
-  v.checks.push_back(check_on_surface(c));
-  v.checks.push_back(check_within_both_hulls(c));
-  v.checks.push_back(check_has_contacts(c));
-  v.checks.push_back(check_agrees_with_gjk(c));
-  v.checks.push_back(check_depth_exact(c));
-  v.checks.push_back(check_depth_within_epa_bounds(c));
-  v.checks.push_back(check_normal_agrees_with_epa(c));
-  v.checks.push_back(check_normal_realises_depth(c));
-  v.checks.push_back(check_separates(c));
-  v.checks.push_back(check_spans_contact_region(c));
   return v;
+}
+
+}  // namespace
+
+const std::vector<std::string>& invariant_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const InvariantRow& row : kInvariants) v.push_back(row.name);
+    return v;
+  }();
+  return names;
+}
+
+Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& m) {
+  const Context c{scene, oracles, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
+  return run_rows(c, status, [](const InvariantRow&) { return true; });
 }
 
 Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& original, double depth_factor,
@@ -334,15 +358,8 @@ Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& orig
   known.exact.signed_depth *= depth_factor;
   known.touching = original.touching;
   known.face_contact = original.face_contact;
-  Verdict v;
   const Context c{scene, known, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
-  v.checks.push_back(check_finite(c));
-  if (v.checks.back().status == CheckStatus::fail) return v;
-  for (auto check : {check_unit_normal, check_negative_penetration, check_pair_consistency, check_on_surface,
-                     check_within_both_hulls, check_has_contacts, check_depth_exact, check_normal_realises_depth,
-                     check_spans_contact_region})
-    v.checks.push_back(check(c));
-  return v;
+  return run_rows(c, 0, [](const InvariantRow& row) { return row.transformed_runs; });
 }
 
 }  // namespace mfz
