@@ -115,27 +115,6 @@ void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
   for (int k = 0; k < hull.face_size(face); ++k) out.push(hull.world_face_point(face, k));
 }
 
-// The tutorial clips against "the adjacent faces" of the reference face: the plane
-// of the face across each of its edges, kept side inward.
-bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
-  const PosedHull& hull = *reference.hull;
-  const int n = hull.face_size(reference.index);
-  ClipPolygon scratch;
-  for (int k = 0; k < n; ++k) {
-    const int v0 = hull.face_vertex(reference.index, k), v1 = hull.face_vertex(reference.index, (k + 1) % n);
-    const int adjacent = hull.face_across(v0, v1);
-    if (adjacent < 0) continue;  // an open hull: no plane to clip against
-    const Vec3 normal = hull.world_face_normal(adjacent);
-    const Plane side{normal, normal.dot(hull.world_vertex(v0))};
-    if (!clip_to_plane(incident, side, scratch)) return false;
-    incident.take(scratch);
-    if (trace)
-      record(trace, "clipped against the plane of face " + std::to_string(adjacent) + " (across edge " +
-                        std::to_string(v0) + "-" + std::to_string(v1) + ")", incident);
-  }
-  return true;
-}
-
 // F1: the clipping method's contact region is the prism over the reference
 // face. The adjacent faces' planes only bound it where those faces stand
 // perpendicular; where they slope inwards the region reaches past the face and
@@ -224,7 +203,7 @@ void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped
   }
 }
 
-bool tutorial_reference_is_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
+bool more_parallel_is_reference_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
   return std::abs(sat.normal.dot(face_a.normal)) < std::abs(sat.normal.dot(face_b.normal));
 }
 
@@ -234,7 +213,7 @@ bool tutorial_reference_is_b(const SatResult& sat, const ClipFace& face_a, const
 bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
   if (sat.kind == AxisKind::face_a) return false;
   if (sat.kind == AxisKind::face_b) return true;
-  return tutorial_reference_is_b(sat, face_a, face_b);
+  return more_parallel_is_reference_b(sat, face_a, face_b);
 }
 
 ClippingSteps::ClippingSteps()
@@ -244,19 +223,6 @@ ClippingSteps::ClippingSteps()
       clip_to_sides(clip_to_reference_prism),
       edge_contact(closest_points_of_edges),
       emit_contacts(emit_clipped_contacts) {}
-
-ClippingSteps tutorial_steps() {
-  ClippingSteps steps;
-  steps.clip_to_sides = clip_to_adjacent_face_planes;
-  steps.face_polygon = face_loop;
-  steps.edge_contact = no_edge_contact;
-  steps.sat = run_tutorial_sat;
-  steps.significant_face_from_sat = false;
-  steps.significant_face_over_ties = false;
-  steps.reference_is_b = tutorial_reference_is_b;
-  steps.frame_at_a = false;
-  return steps;
-}
 
 // Outline of the built-in generator (the tutorial's GenContactPoints, with
 // the fixes FINDINGS.md names), in a frame centred on A's position (F21):
@@ -301,10 +267,10 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   }
 
   int support_a = -1, support_b = -1;
-  ClipFace face_a{&a, significant_face(a, n, support_a, steps.significant_face_over_ties), {}};
-  ClipFace face_b{&b, significant_face(b, -n, support_b, steps.significant_face_over_ties), {}};
-  if (steps.significant_face_from_sat && sat.kind == AxisKind::face_a) face_a.index = sat.feature_a;
-  if (steps.significant_face_from_sat && sat.kind == AxisKind::face_b) face_b.index = sat.feature_b;
+  ClipFace face_a{&a, significant_face(a, n, support_a, true), {}};
+  ClipFace face_b{&b, significant_face(b, -n, support_b, true), {}};
+  if (sat.kind == AxisKind::face_a) face_a.index = sat.feature_a;  // F8
+  if (sat.kind == AxisKind::face_b) face_b.index = sat.feature_b;
   if (trace) trace->face_a = face_a.index, trace->face_b = face_b.index, trace->support_a = support_a,
              trace->support_b = support_b;
   if (face_a.index < 0 || face_b.index < 0) return 1;  // a vertex in no face: not a hull
@@ -335,9 +301,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // F11: equally aligned incident faces (a symmetric corner) are all clipped
   // and their contacts joined: picking one would leave the choice to rounding.
   int incident_faces[kMaxTiedFaces] = {incident.index};
-  int tied = 1;
-  if (steps.significant_face_over_ties)
-    tied = steps.incident_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
+  const int tied = steps.incident_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
   const double resolution = largest_coordinate(reference_polygon);
   const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
   const Plane reference_plane{reference.normal, reference.normal.dot(on_reference)};
@@ -350,8 +314,8 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
     remove_points_outside(polygon, reference_plane);
     if (trace) record(trace, "points above the reference plane removed", polygon);
     for (int k = 0; k < polygon.size(); ++k) {
-      // Only F11's joined faces share points; the tutorial keeps every point.
-      if (steps.significant_face_over_ties && holds_point(clipped, polygon[k], resolution)) continue;
+      // F11's joined faces share points: each is kept once (F19).
+      if (holds_point(clipped, polygon[k], resolution)) continue;
       if (!clipped.push(polygon[k])) return 1;
     }
   }
@@ -361,8 +325,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // beyond the reference face (a fold of 1e-9 rad in the other hull), and the
   // prism clips everything away. The supporting edges then give the contact.
   if (out.contact_count == 0 && steps.edge_contact(a, b, sat, out) && trace) trace->edge_contact = true;
-  if (out.contact_count == 0 && steps.significant_face_over_ties)
-    deepest_vertex_contact(*reference.hull, *incident.hull, n, flipped, out);
+  if (out.contact_count == 0) deepest_vertex_contact(*reference.hull, *incident.hull, n, flipped, out);
   return 0;
 }
 
@@ -379,7 +342,9 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
                                    const mfz_pose& abi_pose_b, mfz_manifold& out, ClipTrace* trace,
                                    const ClippingSteps& steps) {
   const Pose pose_a = Pose::from_abi(abi_pose_a), pose_b = Pose::from_abi(abi_pose_b);
-  if (!steps.frame_at_a) return generate_in_frame(hull_a, pose_a, hull_b, pose_b, out, trace, steps);
+  // F21: the frame is centred on A's position, so that a far frame rounds
+  // B's pose once instead of every decision (which edge is deepest, which
+  // face ties) by eps M.
   const Vec3 origin = pose_a.position;
   const Pose local_a{Vec3::Zero(), pose_a.orientation}, local_b{pose_b.position - origin, pose_b.orientation};
   const int32_t status = generate_in_frame(hull_a, local_a, hull_b, local_b, out, trace, steps);

@@ -42,19 +42,6 @@ struct ClipFace {
 struct ClippingSteps {
   /// The separating-axis test.
   SatResult (*sat)(const PosedHull& a, const PosedHull& b) = run_sat;
-  /// F8: on a face axis, that face is its hull's significant face (the tutorial
-  /// finds both significant faces from the support vertex, which can land on
-  /// a neighbouring face).
-  bool significant_face_from_sat = true;
-  /// F10: a significant face is chosen among the faces of every vertex
-  /// equally far along the direction (within rounding), not only of the one
-  /// that rounding makes furthest; F11: equally aligned incident faces are all
-  /// clipped. Either way rounding does not choose the manifold.
-  bool significant_face_over_ties = true;
-  /// F21: work in a frame whose origin is A's position, not the world's, so
-  /// that a far frame rounds B's pose once instead of rounding every
-  /// decision (which edge is deepest, which face ties) by eps M.
-  bool frame_at_a = true;
   /// F11: the incident faces to clip, all equally aligned (at most `capacity`
   /// into `out`); the count is returned.
   int (*incident_faces)(const PosedHull& hull, const Vec3& direction, int* out, int capacity);
@@ -74,25 +61,16 @@ struct ClippingSteps {
   ClippingSteps();
 };
 
-/// The tutorial's steps exactly, before the harness's findings (FINDINGS.md) fixed
-/// them: the `manifuzz_tutorial` plugin, against which every finding's case fails.
-ClippingSteps tutorial_steps();
-
-/// The tutorial's polygon: the face's own loop.
+/// A face's own loop as its polygon.
 void face_loop(const PosedHull& hull, int face, ClipPolygon& out);
 
-/// The tutorial: edge axes are clipped like face axes.
-bool no_edge_contact(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
 /// F3: the closest points of the two supporting edges are the one contact.
 bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
 
 /// The tutorial's rule: the significant face more parallel to n is the reference.
-bool tutorial_reference_is_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
+bool more_parallel_is_reference_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
 /// F13: on a face axis, that face is the reference face; otherwise the tutorial's rule.
 bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
-/// The tutorial's clip: Sutherland-Hodgman against the planes of the faces adjacent
-/// to the reference face. Wrong where those faces slope inwards (FINDINGS.md F1).
-bool clip_to_adjacent_face_planes(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
 /// Sutherland-Hodgman against the prism over the reference face: through each
 /// edge, the plane perpendicular to the face.
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);

@@ -60,7 +60,6 @@ bool holds_contact(const mfz_manifold& out, int first, const Vec3& point_a) {
 
 }  // namespace
 
-bool no_edge_contact(const PosedHull&, const PosedHull&, const SatResult&, mfz_manifold&) { return false; }
 
 bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out) {
   Segment edges_a[kMaxSupportingEdges], edges_b[kMaxSupportingEdges];

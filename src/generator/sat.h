@@ -26,12 +26,9 @@ struct SatResult {
 /// the one with B on the +axis side (so the normal from A to B is +axis).
 double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, bool& b_along_axis);
 
-/// SAT as the tutorial runs it: candidates in the order A's faces, B's faces,
-/// edge pairs; a candidate replaces the best only when its overlap is strictly
-/// smaller, so the earlier axis wins an exact tie. Stops at the first
-/// separating axis. Allocates nothing.
-SatResult run_tutorial_sat(const PosedHull& a, const PosedHull& b);
-/// The built-in generator's SAT: the tutorial's, except that an edge axis must
+/// The built-in generator's SAT: candidates in the order A's faces, B's
+/// faces, edge pairs; stops at the first separating axis; allocates nothing.
+/// Unlike the tutorial's (generator/baseline), an edge axis must
 /// beat the face axes by tol::kEdgeAxisBias (F3), edges between coplanar
 /// faces give no axis (F4), a face normal counts one way only (F7), and only
 /// edge pairs whose Gauss arcs may cross are tried (edge_arcs.h).

@@ -100,6 +100,21 @@ class PosedHull {
     return other >= 0 && coplanar_normals(world_face_normal(other), world_face_normal(face));
   }
 
+  /// Calls visit(edge_index, v0, v1, face) once per undirected edge, in loop
+  /// order: the step v0 -> v1 of `face` with v0 < v1 stands for the edge, its
+  /// twin is skipped. Stops when visit returns false.
+  template <class Visit>
+  void for_each_edge(Visit&& visit) const {
+    int index = 0;
+    for (int f = 0; f < face_count(); ++f) {
+      const int n = face_size(f);
+      for (int k = 0; k < n; ++k) {
+        const int v0 = face_vertex(f, k), v1 = face_vertex(f, (k + 1) % n);
+        if (v0 < v1 && !visit(index++, v0, v1, f)) return;
+      }
+    }
+  }
+
  private:
   const mfz_hull& hull_;
   const Pose& pose_;

@@ -1,7 +1,7 @@
 // The tutorial's method exactly as written, before the harness's fixes: a plugin
 // so that each finding's minimised case can be replayed against it
-// (manifuzz replay --generator build/plugins/libmanifuzz_tutorial.so corpus/regressions/*).
-#include "generator/clipping_generator.h"
+// (manifuzz replay --generator build/default/plugins/libmanifuzz_tutorial.so corpus/regressions/*).
+#include "generator/baseline/tutorial_method.h"
 
 extern "C" {
 __attribute__((visibility("default"))) int32_t mfz_abi_version(void) { return MFZ_ABI_VERSION; }
@@ -10,7 +10,6 @@ __attribute__((visibility("default"))) int32_t mfz_generate(const mfz_hull* a, c
                                                             const mfz_hull* b, const mfz_pose* pose_b,
                                                             mfz_manifold* out) {
   if (!a || !pose_a || !b || !pose_b || !out) return 1;
-  static const mfz::ClippingSteps steps = mfz::tutorial_steps();
-  return mfz::generate_clipping_manifold(*a, *pose_a, *b, *pose_b, *out, nullptr, steps);
+  return mfz::generate_tutorial_manifold(*a, *pose_a, *b, *pose_b, *out);
 }
 }
