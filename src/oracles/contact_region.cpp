@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/tolerances.h"
+
 namespace mfz {
 namespace {
 
@@ -89,6 +91,21 @@ Vec2 area_centroid(const std::vector<Vec2>& poly) {
   return o + sum / area;
 }
 
+// The faces (planes) facing along `d`, within kFoldAngle, that some corner
+// lies on: a corner inside a convex hull and on a face's plane is on that face.
+int facing_faces(const Planes& planes, const std::vector<Vec3>& corners, const Vec3& d, double slack) {
+  int count = 0;
+  for (size_t f = 0; f < planes.normals.size(); ++f) {
+    if (planes.normals[f].dot(d) < std::cos(tol::kFoldAngle)) continue;
+    for (const Vec3& c : corners)
+      if (std::abs(planes.normals[f].dot(c) - planes.offsets[f]) <= slack) {
+        ++count;
+        break;
+      }
+  }
+  return count;
+}
+
 double segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double len = ab.squaredNorm();
@@ -128,6 +145,8 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
   add_corners(s.hull_b, s.world_b, shift_b, planes_b, planes_a, slack, corners);
   ContactRegion region;
   if (corners.empty()) return region;
+  region.facing_faces_a = facing_faces(planes_a, corners, n, slack);
+  region.facing_faces_b = facing_faces(planes_b, corners, -n, slack);
   Vec3 u, v;
   plane_basis(n, u, v);
   std::vector<Vec2> projected;
@@ -139,21 +158,6 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
     for (size_t j = i + 1; j < region.corners.size(); ++j)
       region.width = std::max(region.width, (region.corners[i] - region.corners[j]).norm());
   return region;
-}
-
-bool support_on_one_face(const Hull& hull, const std::vector<Vec3>& world, const Vec3& d, double window) {
-  double top = -INFINITY;
-  for (const Vec3& p : world) top = std::max(top, d.dot(p));
-  std::vector<int> support;
-  for (int i = 0; i < static_cast<int>(world.size()); ++i)
-    if (d.dot(world[i]) >= top - window) support.push_back(i);
-  for (int f = 0; f < hull.face_count(); ++f) {
-    int held = 0;
-    for (int k = 0; k < hull.face_size(f); ++k)
-      held += std::count(support.begin(), support.end(), hull.face_vertex(f, k)) > 0 ? 1 : 0;
-    if (held == static_cast<int>(support.size())) return true;
-  }
-  return false;
 }
 
 }  // namespace mfz

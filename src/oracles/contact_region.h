@@ -20,6 +20,9 @@ struct ContactRegion {
   double width = 0;
   /// The projected region's corners, counter-clockwise.
   std::vector<Eigen::Vector2d> corners;
+  /// How many faces of A (of B) facing the other hull, within kFoldAngle of
+  /// n, the region lies against: two or more is a face folded under it.
+  int facing_faces_a = 0, facing_faces_b = 0;
 };
 
 /// A basis (u, v) of the plane perpendicular to unit `n`.
@@ -32,10 +35,5 @@ ContactRegion contact_region(const Scene& scene, const Vec3& n, const Vec3& shif
 
 /// The distance from point `p` to the convex hull of `points` (0 inside).
 double distance_to_convex_hull_2d(const Eigen::Vector2d& p, std::vector<Eigen::Vector2d> points);
-
-/// True when the vertices of `hull` (posed as `world`) within `window` of its
-/// extreme along `d` all lie on one face of it: its first-touching feature
-/// is one vertex, edge or face, not a face folded into two.
-bool support_on_one_face(const Hull& hull, const std::vector<Vec3>& world, const Vec3& d, double window);
 
 }  // namespace mfz
