@@ -86,15 +86,23 @@ int significant_face(const PosedHull& hull, const Vec3& direction, int& support,
   return best;
 }
 
+// The faces to clip: those as parallel as the most parallel (F11), and the
+// face that holds the most of the support with its equals (F24). Either rule
+// alone loses contacts: F24's alone kept one half of a face folded by 1e-9
+// whose other half held one support vertex fewer, by 4e-10 of rounding (F25).
 int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity) {
   const int support = hull.support_vertex(direction);
   FaceRank best;
+  double most_parallel = -std::numeric_limits<double>::infinity();
   faces_at_support(hull, direction, support, true, [&](int, double alignment, int held) {
     if (const FaceRank rank{held, alignment}; rank.beats(best)) best = rank;
+    most_parallel = std::max(most_parallel, alignment);
   });
   int count = 0;
   faces_at_support(hull, direction, support, true, [&](int f, double alignment, int held) {
-    if (held == best.held && alignment >= best.alignment - tol::kTie && count < capacity) out[count++] = f;
+    const bool holds_the_support = held == best.held && alignment >= best.alignment - tol::kTie;
+    const bool as_parallel = alignment >= most_parallel - tol::kTie;
+    if ((holds_the_support || as_parallel) && count < capacity) out[count++] = f;
   });
   return count;
 }
