@@ -74,11 +74,17 @@ inline constexpr double kIncidentAlignment = 1e-8;
 /// 1e-4 rad that reaches 98% of the depth while the incident face holds only
 /// the near end (seed 20261121, case 384).
 inline constexpr double kRegionFirstTouch = 0.99;
+/// spans-contact-region: the region's corners are crossings of edges with
+/// planes; where they graze at an angle t, rounding moves them by eps M /
+/// sin t (a needle's end tilted 1e-3, 1e-7 deep, 1e6 L out: seed 1), so the
+/// centroid is compared to within this (x L), as the relations compare points.
+inline constexpr double kRegionPoint = 1e-6;
 /// spans-contact-region: the region's centroid may lie outside the contacts
 /// by this many times the distance it moves between kRegionFirstTouch and
 /// half-way to touching, plus kPoint L. A region that grows about a point (a
 /// vertex, an edge) with depth drifts by about half its offset and passes; a
-/// flat contact's region does not drift, so its contacts must span it.
+/// flat contact's region does not drift, so its contacts must span it. Added
+/// to kRegionPoint L.
 inline constexpr double kRegionDrift = 4.0;
 /// spans-contact-region: two faces of one hull, each within this angle
 /// (radians) of facing the other hull, that the region lies against are a

@@ -284,7 +284,8 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   std::vector<Eigen::Vector2d> contacts;
   for (int i = 0; i < c.m.contact_count; ++i) contacts.emplace_back(u.dot(c.on_a(i)), v.dot(c.on_a(i)));
   const double off = distance_to_convex_hull_2d(region.centroid, contacts);
-  return measured(c.relative(off), c.relative(tol + tol::kRegionDrift * drift),
+  const double allowed = c.scene.length_tolerance(tol::kRegionPoint) + tol::kRegionDrift * drift;
+  return measured(c.relative(off), c.relative(allowed),
                   text("region's centroid %g outside the contacts' hull; region width %g, drift %g", off,
                        region.width, drift));
 }
