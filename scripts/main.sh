@@ -9,5 +9,5 @@ scripts/bootstrap.sh
 cmake --preset default >/dev/null
 cmake --build --preset default
 manifuzz=build/default/src/manifuzz
-"$manifuzz" replay corpus/*.case corpus/regressions/*.case | grep -E '^(case|verdict|VIOLATION)'
-exec "$manifuzz" check --generator builtin "$@"
+"$manifuzz" replay --strict corpus/*.case corpus/regressions/*.case | grep -E '^(case|verdict|VIOLATION)'
+exec "$manifuzz" check --generator builtin --strict "$@"
