@@ -24,7 +24,7 @@ struct Finding {
   std::string detail;
   /// For a relation finding: the case file line that reproduces it
   /// (`relation NAME numbers...`); empty otherwise.
-  std::string relation_line;
+  std::string relation_line = {};
   /// A failed check's error and tolerance (x L); 0 where none is measured.
   double error = 0, tolerance = 0;
 };

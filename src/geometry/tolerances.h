@@ -91,6 +91,9 @@ inline constexpr double kRegionDrift = 4.0;
 /// face folded under the contact: the clipping method takes one of them as
 /// its reference (a cube 1000 times smaller across a fold of 1e-6, seed 4).
 inline constexpr double kFoldAngle = 0.05;
+/// spans-contact-region: the region's corners count as inside a hull within
+/// this (x L) plus the frame's rounding.
+inline constexpr double kRegionSlack = 1e-12;
 /// spans-contact-region is checked only for a shallow contact, where the
 /// intersection is thin along n: the depth at most this fraction of the
 /// region's width (a body sunk deep into another has no contact plane).
