@@ -96,14 +96,6 @@ struct Deadline {
   }
 };
 
-// A smaller case still shows the finding when the same check fails by a
-// margin of the same order as the original's: a shrink that turns a 1.77 L
-// error into a rounding-sized one has found a different, lesser failure.
-bool same_failure(const Finding& original, const Finding& candidate) {
-  if (candidate.name != original.name) return false;
-  return !(original.error > 0) || candidate.error >= kSameOrder * original.error;
-}
-
 // Greedy shrinking over RapidCheck's shrink tree: take the first smaller case
 // that fails the same way, until none does.
 rc::Shrinkable<GeneratedCase> shrink(rc::Shrinkable<GeneratedCase> failing, Finding& finding, GeneratorSession& g,
@@ -148,6 +140,13 @@ std::string write_case(const CheckOptions& options, const GeneratedCase& g, cons
 }
 
 }  // namespace
+
+// A shrink that turned a 1.77 L error into a rounding-sized one had found a
+// different, lesser failure: the minimised case must fail by the same order.
+bool same_failure(const Finding& original, const Finding& candidate) {
+  if (candidate.name != original.name) return false;
+  return !(original.error > 0) || candidate.error >= kSameOrder * original.error;
+}
 
 bool prepare_out_dir(const std::string& dir, std::string& error) {
   if (dir.empty()) {

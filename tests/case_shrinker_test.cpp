@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case_shrinker.h"
+#include "check_driver.h"
 #include "geometry/hull.h"
 #include "test_support.h"
 
@@ -80,4 +81,17 @@ TEST(CaseShrinker, KeepsACaseThatCannotShrink) {
 }
 
 }  // namespace
+// A finding of 1.77 L once shrank to one of 7.4e-9 L: the same name, another
+// failure. Shrinking keeps a step only at the same order of error.
+TEST(ShrinkingKeepsTheFailure, OnlyAStepFailingTheSameCheckBySameOrderOfMarginCounts) {
+  const props::Finding original{"on-surface", "", "", 1.77, 1e-9};
+  EXPECT_TRUE(props::same_failure(original, {"on-surface", "", "", 0.9, 1e-9}));
+  EXPECT_TRUE(props::same_failure(original, {"on-surface", "", "", 0.2, 1e-9}));
+  EXPECT_FALSE(props::same_failure(original, {"on-surface", "", "", 0.15, 1e-9}));
+  EXPECT_FALSE(props::same_failure(original, {"on-surface", "", "", 7.4e-9, 1e-9}));
+  EXPECT_FALSE(props::same_failure(original, {"within-both-hulls", "", "", 1.77, 1e-9}));
+  const props::Finding relation{"rigid-motion", "the normals differ", "relation rigid-motion 1 0 0 0 0 0 0"};
+  EXPECT_TRUE(props::same_failure(relation, {"rigid-motion", "contact 0 lies 0.1 from the other run's", ""}));
+}
+
 }  // namespace mfz::props
