@@ -22,6 +22,15 @@ for m in $mutants; do
     n=${at##* }
     detections+=("$((n + 1))")
     printf '  caught  %-22s %s -> %s\n' "$m" "${at:-?}" "$(grep -oE '^VIOLATION [a-z-]+' <<<"$out")"
+    # A finding that does not replay is worthless: its case file must fail
+    # again, with the same check, against the same generator.
+    file=$(grep -oE '^VIOLATION [a-z-]+ .*' <<<"$out" | head -1 | cut -d' ' -f3-)
+    name=$(grep -oE '^VIOLATION [a-z-]+' <<<"$out" | head -1 | cut -d' ' -f2)
+    again=$("$manifuzz" replay --generator "$plugins/libmfz_mutant_$m.so" "$file" 2>&1)
+    if [ $? -ne 1 ] || ! grep -q "^VIOLATION $name " <<<"$again"; then
+      failures=$((failures + 1))
+      printf '  NO REPLAY %s: %s did not fail %s again\n' "$m" "$file" "$name"
+    fi
   else
     failures=$((failures + 1))
     printf '  MISSED  %-22s (status %s in %s cases)\n' "$m" "$status" "$budget"
