@@ -345,12 +345,6 @@ const std::vector<std::string>& hull_family_names() {
   return names;
 }
 
-const std::vector<std::string>& placement_names() {
-  static const std::vector<std::string> names = {"face-on-face", "cube-symmetry", "edge-edge",
-                                                 "vertex-face",  "corner-corner", "random"};
-  return names;
-}
-
 rc::Gen<std::vector<Vec3>> hull_points(const std::string& family) {
   for (const auto& [name, make] : families())
     if (name == family) return rc::gen::exec(make);
@@ -363,55 +357,73 @@ void scale_points(std::vector<Vec3>& points, double s) {
   for (Vec3& p : points) p *= s;
 }
 
-// Orients and places B against A by the named placement.
-void place_by(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out);
+// Each placement orients B and moves it against A along a direction d (world,
+// from A to B) by `overlap`; A's orientation is drawn before.
+using Place = void (*)(Placed& a, Placed& b, GeneratedCase& out, double overlap, double size);
 
-void place(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out) {
-  place_by(placement, a, b, out);
-  if (out.overlap == "concentric") make_concentric(a, b, std::min(a.hull.diameter(), b.hull.diameter()));
+void place_randomly(Placed& a, Placed& b, GeneratedCase& out, double overlap, double size) {
+  b.pose.orientation = any_rotation();
+  const Vec3 dir = digit_vector(10);
+  const Vec3 d = dir.isZero() ? Vec3::UnitZ() : Vec3(dir.normalized());
+  out.tilt = "exact";
+  place_along(a, b, d, overlap, size);
 }
 
-void place_by(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out) {
-  a.pose.orientation = any_rotation();
-  const double size = std::min(a.hull.diameter(), b.hull.diameter());
-  const double overlap = any_overlap(size / 2, out.overlap);
-  Vec3 d;  // world direction from A to B along which they meet
-  Vec3 feature_b;  // B's feature direction (local), to turn towards -d
-  if (placement == "random") {
-    b.pose.orientation = any_rotation();
-    const Vec3 dir = digit_vector(10);
-    d = dir.isZero() ? Vec3::UnitZ() : Vec3(dir.normalized());
-    out.tilt = "exact";
-    place_along(a, b, d, overlap, size);
-    return;
-  }
-  if (placement == "cube-symmetry") {
-    a.pose.orientation = Quat::Identity();
-    d = Vec3::UnitZ();
-    b.pose.orientation = tilt_about(d, out.tilt) * cube_symmetries()[pick(0, 23)];
-    place_along(a, b, d, overlap, size);
-    return;
-  }
+void place_by_cube_symmetry(Placed& a, Placed& b, GeneratedCase& out, double overlap, double size) {
+  a.pose.orientation = Quat::Identity();
+  const Vec3 d = Vec3::UnitZ();
+  b.pose.orientation = tilt_about(d, out.tilt) * cube_symmetries()[pick(0, 23)];
+  place_along(a, b, d, overlap, size);
+}
+
+// A feature of A (its direction from A's centre gives d) against a feature of
+// B turned to face -d, spun about d and tilted.
+template <Vec3 (*FeatureOfA)(const Hull&, int), Vec3 (*FeatureOfB)(const Hull&, int)>
+void place_features(Placed& a, Placed& b, GeneratedCase& out, double overlap, double size) {
   const int fa = pick(0, 63), fb = pick(0, 63);
-  if (placement == "face-on-face") {
-    d = a.pose.rotate(face_direction(a.hull, fa));
-    feature_b = face_direction(b.hull, fb);
-  } else if (placement == "edge-edge") {
-    d = a.pose.rotate(edge_direction(a.hull, fa));
-    feature_b = edge_direction(b.hull, fb);
-  } else if (placement == "vertex-face") {
-    d = a.pose.rotate(face_direction(a.hull, fa));
-    feature_b = vertex_direction(b.hull, fb);
-  } else {  // corner-corner
-    d = a.pose.rotate(vertex_direction(a.hull, fa));
-    feature_b = vertex_direction(b.hull, fb);
-  }
+  const Vec3 d = a.pose.rotate(FeatureOfA(a.hull, fa));
+  const Vec3 feature_b = FeatureOfB(b.hull, fb);
   const Quat spin(Eigen::AngleAxisd(pick(0, 359) * M_PI / 180, d));
   b.pose.orientation = tilt_about(d, out.tilt) * spin * rotation_between(feature_b, -d);
   place_along(a, b, d, overlap, size);
 }
 
+struct PlacementRow {
+  const char* name;
+  Place place;
+};
+
+// The placements: one table gives the names and the dispatch.
+const PlacementRow kPlacements[] = {
+    {"face-on-face", place_features<face_direction, face_direction>},
+    {"cube-symmetry", place_by_cube_symmetry},
+    {"edge-edge", place_features<edge_direction, edge_direction>},
+    {"vertex-face", place_features<face_direction, vertex_direction>},
+    {"corner-corner", place_features<vertex_direction, vertex_direction>},
+    {"random", place_randomly},
+};
+
+// Orients and places B against A by the named placement; a concentric
+// overlap then puts B's centre near A's.
+void place(const std::string& placement, Placed& a, Placed& b, GeneratedCase& out) {
+  a.pose.orientation = any_rotation();
+  const double size = std::min(a.hull.diameter(), b.hull.diameter());
+  const double overlap = any_overlap(size / 2, out.overlap);
+  for (const PlacementRow& row : kPlacements)
+    if (placement == row.name) row.place(a, b, out, overlap, size);
+  if (out.overlap == "concentric") make_concentric(a, b, size);
+}
+
 }  // namespace
+
+const std::vector<std::string>& placement_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const PlacementRow& row : kPlacements) v.push_back(row.name);
+    return v;
+  }();
+  return names;
+}
 
 rc::Gen<GeneratedCase> any_case() {
   return rc::gen::exec([] {

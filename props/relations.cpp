@@ -14,14 +14,6 @@
 namespace mfz::props {
 namespace {
 
-/// Normals of two runs of a relation agree within this (dimensionless), plus
-/// the world frame's resolution over the shortest edge (tolerances_for).
-constexpr double kRelationNormal = 1e-6;
-/// Contact points of two runs agree within this (x L). Looser than the
-/// invariants' 1e-9: where an incident edge grazes a clipping plane at an
-/// angle t, rounding moves the crossing point along the edge by about eps M /
-/// sin t, and both places are right. Depths stay at tol::kDepth.
-constexpr double kRelationPoint = 1e-6;
 /// Contact sets larger than this are not compared point by point (see relations.h).
 constexpr int kComparedContacts = 3;
 
@@ -193,7 +185,7 @@ Hull triangulated(const Hull& h) {
 // edge: a 1e-4 edge 1e6 from the origin points only to within 1e-4 rad.
 Tolerances tolerances_for(const Scene& s, double extra_extent = 0) {
   const double ulps = tol::world_rounding(s.world_extent + extra_extent);
-  return {tol::kDepth * s.scale + ulps, kRelationPoint * s.scale + ulps, kRelationNormal + ulps / s.shortest_edge};
+  return {tol::kDepth * s.scale + ulps, tol::kRelationPoint * s.scale + ulps, tol::kRelationNormal + ulps / s.shortest_edge};
 }
 
 std::optional<Finding> finding_if(const std::string& relation, const std::optional<std::string>& difference) {

@@ -32,14 +32,14 @@ std::string expected_tutorial_outcome(const CaseFile& c) {
 TEST_P(RegressionCase, BuiltinPassesAndTheTutorialMethodAnswersAsRecorded) {
   const CaseParse parsed = read_case_file(GetParam());
   ASSERT_TRUE(parsed.value) << parsed.error;
-  const auto builtin = in_process_session(Generator::builtin());
+  std::string load_error;
+  const auto builtin = open_session("builtin", 5, load_error);
   const props::CaseOutcome fixed = props::check_case(*parsed.value, *builtin, {{}, props::Level::strict});
   ASSERT_FALSE(fixed.invalid) << fixed.invalid_reason;
   EXPECT_FALSE(fixed.finding) << fixed.finding->name << ": " << fixed.finding->detail;
   std::string error;
-  const auto tutorial = Generator::open(std::string(MANIFUZZ_PLUGIN_DIR) + "/libmanifuzz_tutorial.so", error);
-  ASSERT_TRUE(tutorial) << error;
-  const auto tutorial_session = in_process_session(*tutorial);
+  const auto tutorial_session = open_session(std::string(MANIFUZZ_PLUGIN_DIR) + "/libmanifuzz_tutorial.so", 5, error);
+  ASSERT_TRUE(tutorial_session) << error;
   const props::CaseOutcome unfixed = props::check_case(*parsed.value, *tutorial_session, {{}, props::Level::strict});
   const std::string expected = expected_tutorial_outcome(*parsed.value);
   ASSERT_FALSE(expected.empty()) << "the case has no 'expect-tutorial' line";

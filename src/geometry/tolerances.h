@@ -99,6 +99,16 @@ inline constexpr double kRegionSlack = 1e-12;
 /// region's width (a body sunk deep into another has no contact plane).
 inline constexpr double kThinRegion = 0.25;
 
+/// Relations: normals of two runs agree within this (dimensionless), plus
+/// the world frame's resolution over the shortest edge: an edge-edge normal
+/// is a cross product of edges taken from world coordinates.
+inline constexpr double kRelationNormal = 1e-6;
+/// Relations: contact points of two runs agree within this (x L). Looser than
+/// the invariants' 1e-9: where an incident edge grazes a clipping plane at an
+/// angle t, rounding moves the crossing point along the edge by about eps M /
+/// sin t, and both places are right. Depths stay at kDepth.
+inline constexpr double kRelationPoint = 1e-6;
+
 /// Hull building: a point within this (x L) of a plane through three others
 /// makes the cloud flat (no positive volume).
 inline constexpr double kFlatHull = 1e-9;
