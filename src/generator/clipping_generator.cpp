@@ -4,7 +4,9 @@
 #include <limits>
 
 #include "generator/clip_polygon.h"
+#include "generator/contact_output.h"
 #include "generator/coplanar_patch.h"
+#include "generator/last_resort_contact.h"
 #include "geometry/tolerances.h"
 
 namespace mfz {
@@ -13,47 +15,6 @@ namespace {
 
 // Enough for the apex of a 64-sided pyramid, whose side faces all tie (F15).
 constexpr int kMaxTiedFaces = 64;
-
-// F10's slack: within it of the furthest, a vertex is as far. The hull's
-// extent along the direction sets the scale, the world coordinates the rounding.
-double furthest_slack(const PosedHull& hull, const Vec3& direction, double furthest) {
-  double nearest = furthest;
-  for (int i = 0; i < hull.vertex_count(); ++i) nearest = std::min(nearest, direction.dot(hull.world_vertex(i)));
-  return tol::kTie * (furthest - nearest) + tol::world_rounding(std::abs(furthest));
-}
-
-// Faces that hold the support vertex, or with over_ties any vertex as far;
-// `visit(face, alignment, held)` also gets how many of those support vertices
-// the face holds. With over_ties the support can be an edge or a face, and a
-// significant face must hold all of it that any face holds: a face with only
-// one end of a supporting edge can lie wholly outside the reference prism
-// while the edge crosses it (F24).
-template <class Visit>
-void faces_at_support(const PosedHull& hull, const Vec3& direction, int support, bool over_ties, Visit&& visit) {
-  const double furthest = direction.dot(hull.world_vertex(support));
-  const double slack = over_ties ? furthest_slack(hull, direction, furthest) : -1;
-  for (int f = 0; f < hull.face_count(); ++f) {
-    int held = 0;
-    bool contains_support = false;
-    for (int k = 0; k < hull.face_size(f); ++k) {
-      const int v = hull.face_vertex(f, k);
-      const bool at_support = v == support || direction.dot(hull.world_vertex(v)) >= furthest - slack;
-      held += at_support ? 1 : 0;
-      contains_support |= v == support;
-    }
-    if (held > 0 && (over_ties || contains_support)) visit(f, hull.world_face_normal(f).dot(direction), held);
-  }
-}
-
-// A face beats another when it holds more of the support, then when it is
-// more parallel to the direction.
-struct FaceRank {
-  int held = 0;
-  double alignment = -std::numeric_limits<double>::infinity();
-  bool beats(const FaceRank& other) const {
-    return held != other.held ? held > other.held : alignment > other.alignment;
-  }
-};
 
 // Equal to rounding: two tied faces clip their shared edge from both ends.
 // Rounding is a few ulps of the coordinates the clip worked with (the
@@ -74,38 +35,6 @@ double largest_coordinate(const ClipPolygon& polygon) {
 }
 
 }  // namespace
-
-int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties) {
-  support = hull.support_vertex(direction);
-  int best = -1;
-  FaceRank best_rank;
-  faces_at_support(hull, direction, support, over_ties, [&](int f, double alignment, int held) {
-    const FaceRank rank{held, alignment};
-    if (rank.beats(best_rank)) best_rank = rank, best = f;
-  });
-  return best;
-}
-
-// The faces to clip: those as parallel as the most parallel (F11), and the
-// face that holds the most of the support with its equals (F24). Either rule
-// alone loses contacts: F24's alone kept one half of a face folded by 1e-9
-// whose other half held one support vertex fewer, by 4e-10 of rounding (F25).
-int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity) {
-  const int support = hull.support_vertex(direction);
-  FaceRank best;
-  double most_parallel = -std::numeric_limits<double>::infinity();
-  faces_at_support(hull, direction, support, true, [&](int, double alignment, int held) {
-    if (const FaceRank rank{held, alignment}; rank.beats(best)) best = rank;
-    most_parallel = std::max(most_parallel, alignment);
-  });
-  int count = 0;
-  faces_at_support(hull, direction, support, true, [&](int f, double alignment, int held) {
-    const bool holds_the_support = held == best.held && alignment >= best.alignment - tol::kTie;
-    const bool as_parallel = alignment >= most_parallel - tol::kTie;
-    if ((holds_the_support || as_parallel) && count < capacity) out[count++] = f;
-  });
-  return count;
-}
 
 namespace {
 
@@ -152,91 +81,6 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
   return true;
 }
 
-namespace {
-
-void add_contact(mfz_manifold& out, const Vec3& on_a, const Vec3& on_b, double penetration) {
-  mfz_contact& c = out.contacts[out.contact_count++];
-  c.point_on_a = to_abi(on_a);
-  c.point_on_b = to_abi(on_b);
-  c.penetration = penetration;
-}
-
-// How far a ray from `point` along `out_of` runs inside the reference hull;
-// negative when the point is outside it.
-double exit_along(const PosedHull& reference, const Vec3& point, const Vec3& out_of) {
-  double exit = std::numeric_limits<double>::infinity();
-  for (int f = 0; f < reference.face_count(); ++f) {
-    const Vec3 normal = reference.world_face_normal(f);
-    const double below = normal.dot(reference.world_face_point(f, 0) - point);
-    if (below < 0) return -1;  // outside this face's plane
-    const double rate = normal.dot(out_of);
-    if (!(rate > 0)) continue;  // the ray does not leave through a face it runs along or away from
-    exit = std::min(exit, below / rate);
-  }
-  return exit;
-}
-
-// The part of segment [p, q] inside every face plane of `hull` (Cyrus-Beck),
-// as parameters [t0, t1]; false when none is.
-bool segment_inside(const PosedHull& hull, const Vec3& p, const Vec3& q, double& t0, double& t1) {
-  t0 = 0, t1 = 1;
-  for (int f = 0; f < hull.face_count() && t0 <= t1; ++f) {
-    const Vec3 normal = hull.world_face_normal(f);
-    const double offset = normal.dot(hull.world_face_point(f, 0));
-    const double dp = normal.dot(p) - offset, dq = normal.dot(q) - offset;
-    if (dp > 0 && dq > 0) return false;
-    if (dp > 0) t0 = std::max(t0, dp / (dp - dq));
-    if (dq > 0) t1 = std::min(t1, dp / (dp - dq));
-  }
-  return t0 <= t1;
-}
-
-// The point of `inner` deepest into `outer` along `into`: its deepest vertex
-// when that is inside (F17, F18), else the deepest point of an edge that runs
-// inside (two corners crossing by their edges, F26).
-bool deepest_point_inside(const PosedHull& outer, const PosedHull& inner, const Vec3& into, Vec3& point) {
-  const Vec3 vertex = inner.world_vertex(inner.support_vertex(into));
-  if (exit_along(outer, vertex, -into) >= 0) return point = vertex, true;
-  bool found = false;
-  double deepest = -std::numeric_limits<double>::infinity();
-  inner.for_each_edge([&](int, int v0, int v1, int) {
-    const Vec3 p = inner.world_vertex(v0), q = inner.world_vertex(v1);
-    double t0, t1;
-    if (segment_inside(outer, p, q, t0, t1))
-      for (const double t : {t0, t1})
-        if (const Vec3 x = p + t * (q - p); into.dot(x) > deepest) deepest = into.dot(x), point = x, found = true;
-    return true;
-  });
-  return found;
-}
-
-// F17: the last resort when neither clipping nor the edges give a contact (the
-// reference face is one half of a fold, and the other hull pokes into the
-// other half; two corners crossing by their edges under a face axis that F3
-// preferred, F26): a point of one hull deepest inside the other, paired with
-// where a ray from it along n leaves the other. A point of B inside A leaves
-// A along +n, one of A inside B leaves B along -n; both points are on their
-// surfaces by construction, and the ray is no longer than the depth, since
-// moving B by depth n separates the hulls. The incident hull's point is tried
-// first.
-void deepest_point_contact(const PosedHull& a, const PosedHull& b, const Vec3& n, bool flipped, mfz_manifold& out) {
-  for (const bool b_inside_a : {!flipped, flipped}) {
-    Vec3 point;
-    const Vec3 out_of = b_inside_a ? n : Vec3(-n);
-    if (!(b_inside_a ? deepest_point_inside(a, b, -out_of, point) : deepest_point_inside(b, a, -out_of, point)))
-      continue;
-    const double exit = exit_along(b_inside_a ? a : b, point, out_of);
-    if (!(exit > 0) || !std::isfinite(exit)) continue;
-    const double p = -exit;
-    if (b_inside_a)
-      add_contact(out, point - p * n, point, p);
-    else
-      add_contact(out, point, point + p * n, p);
-    return;
-  }
-}
-
-}  // namespace
 
 // The tutorial's last loop: each clipped point is on the incident face; its depth
 // is measured from the closest point of the reference polygon, along n.

@@ -8,6 +8,7 @@
 
 #include "manifuzz/abi.h"
 #include "generator/sat.h"
+#include "generator/significant_faces.h"
 
 namespace mfz {
 
@@ -83,16 +84,5 @@ void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped
 int32_t generate_clipping_manifold(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b,
                                    const mfz_pose& pose_b, mfz_manifold& out, ClipTrace* trace = nullptr,
                                    const ClippingSteps& steps = ClippingSteps());
-
-/// The faces `significant_face` could pick with over_ties, all equally
-/// aligned within tol::kTie (F11); at most `capacity` into `out`.
-int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity);
-
-/// The face of `hull` the tutorial calls significant for `direction`: of the faces
-/// that contain the vertex furthest along `direction`, the one whose normal is
-/// most parallel to it (first of equals). Sets `support` to that vertex.
-/// With `over_ties`, the faces of every vertex within rounding of the
-/// furthest compete (F10).
-int significant_face(const PosedHull& hull, const Vec3& direction, int& support, bool over_ties = false);
 
 }  // namespace mfz

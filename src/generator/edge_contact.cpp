@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "generator/clipping_generator.h"
+#include "generator/contact_output.h"
 #include "geometry/closest_point.h"
 #include "geometry/tolerances.h"
 
@@ -87,10 +88,7 @@ bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatRe
       // agrees with it to rounding, because n is the edges' common normal.
       const double p = -(point_a - point_b).dot(sat.normal);
       if (!(p < 0) || out.contact_count == MFZ_MAX_CONTACTS || holds_contact(out, first, point_a)) continue;
-      mfz_contact& c = out.contacts[out.contact_count++];
-      c.point_on_a = to_abi(point_a);
-      c.point_on_b = to_abi(Vec3(point_a + p * sat.normal));
-      c.penetration = p;
+      add_contact(out, point_a, point_a + p * sat.normal, p);
     }
   return out.contact_count > first;
 }

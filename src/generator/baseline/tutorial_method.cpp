@@ -1,6 +1,7 @@
 #include "generator/baseline/tutorial_method.h"
 
 #include "generator/clip_polygon.h"
+#include "generator/contact_output.h"
 
 namespace mfz {
 namespace {
@@ -18,13 +19,6 @@ bool try_axis(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind
   }
   if (overlap < best.depth) best = {false, along ? axis : Vec3(-axis), overlap, kind, fa, fb};
   return true;
-}
-
-void add_contact(mfz_manifold& out, const Vec3& on_a, const Vec3& on_b, double penetration) {
-  mfz_contact& c = out.contacts[out.contact_count++];
-  c.point_on_a = to_abi(on_a);
-  c.point_on_b = to_abi(on_b);
-  c.penetration = penetration;
 }
 
 }  // namespace

@@ -1,0 +1,88 @@
+#include "generator/last_resort_contact.h"
+
+#include <cmath>
+#include <limits>
+
+#include "generator/contact_output.h"
+
+namespace mfz {
+namespace {
+
+// How far a ray from `point` along `out_of` runs inside the reference hull;
+// negative when the point is outside it.
+double exit_along(const PosedHull& reference, const Vec3& point, const Vec3& out_of) {
+  double exit = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < reference.face_count(); ++f) {
+    const Vec3 normal = reference.world_face_normal(f);
+    const double below = normal.dot(reference.world_face_point(f, 0) - point);
+    if (below < 0) return -1;  // outside this face's plane
+    const double rate = normal.dot(out_of);
+    if (!(rate > 0)) continue;  // the ray does not leave through a face it runs along or away from
+    exit = std::min(exit, below / rate);
+  }
+  return exit;
+}
+
+// The part of segment [p, q] inside every face plane of `hull` (Cyrus-Beck),
+// as parameters [t0, t1]; false when none is.
+bool segment_inside(const PosedHull& hull, const Vec3& p, const Vec3& q, double& t0, double& t1) {
+  t0 = 0, t1 = 1;
+  for (int f = 0; f < hull.face_count() && t0 <= t1; ++f) {
+    const Vec3 normal = hull.world_face_normal(f);
+    const double offset = normal.dot(hull.world_face_point(f, 0));
+    const double dp = normal.dot(p) - offset, dq = normal.dot(q) - offset;
+    if (dp > 0 && dq > 0) return false;
+    if (dp > 0) t0 = std::max(t0, dp / (dp - dq));
+    if (dq > 0) t1 = std::min(t1, dp / (dp - dq));
+  }
+  return t0 <= t1;
+}
+
+// The point of `inner` deepest into `outer` along `into`: its deepest vertex
+// when that is inside (F17, F18), else the deepest point of an edge that runs
+// inside (two corners crossing by their edges, F26).
+bool deepest_point_inside(const PosedHull& outer, const PosedHull& inner, const Vec3& into, Vec3& point) {
+  const Vec3 vertex = inner.world_vertex(inner.support_vertex(into));
+  if (exit_along(outer, vertex, -into) >= 0) return point = vertex, true;
+  bool found = false;
+  double deepest = -std::numeric_limits<double>::infinity();
+  inner.for_each_edge([&](int, int v0, int v1, int) {
+    const Vec3 p = inner.world_vertex(v0), q = inner.world_vertex(v1);
+    double t0, t1;
+    if (segment_inside(outer, p, q, t0, t1))
+      for (const double t : {t0, t1})
+        if (const Vec3 x = p + t * (q - p); into.dot(x) > deepest) deepest = into.dot(x), point = x, found = true;
+    return true;
+  });
+  return found;
+}
+
+}  // namespace
+
+// F17: the last resort when neither clipping nor the edges give a contact (the
+// reference face is one half of a fold, and the other hull pokes into the
+// other half; two corners crossing by their edges under a face axis that F3
+// preferred, F26): a point of one hull deepest inside the other, paired with
+// where a ray from it along n leaves the other. A point of B inside A leaves
+// A along +n, one of A inside B leaves B along -n; both points are on their
+// surfaces by construction, and the ray is no longer than the depth, since
+// moving B by depth n separates the hulls. The incident hull's point is tried
+// first.
+void deepest_point_contact(const PosedHull& a, const PosedHull& b, const Vec3& n, bool flipped, mfz_manifold& out) {
+  for (const bool b_inside_a : {!flipped, flipped}) {
+    Vec3 point;
+    const Vec3 out_of = b_inside_a ? n : Vec3(-n);
+    if (!(b_inside_a ? deepest_point_inside(a, b, -out_of, point) : deepest_point_inside(b, a, -out_of, point)))
+      continue;
+    const double exit = exit_along(b_inside_a ? a : b, point, out_of);
+    if (!(exit > 0) || !std::isfinite(exit)) continue;
+    const double p = -exit;
+    if (b_inside_a)
+      add_contact(out, point - p * n, point, p);
+    else
+      add_contact(out, point, point + p * n, p);
+    return;
+  }
+}
+
+}  // namespace mfz
