@@ -56,6 +56,10 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
   int32_t status = 0;
   std::string failure;
   const CallOutcome call = generator.generate(a, pa, b, pb, manifold, status, failure);
+  if (call == CallOutcome::interrupted) {
+    outcome.interrupted = true;
+    return outcome;
+  }
   if (call != CallOutcome::done) {
     outcome.finding = Finding{call == CallOutcome::crashed ? "crash" : "hang", failure, {}};
     return outcome;
@@ -82,7 +86,8 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
   for (const std::string& name : relation_names()) {
     if (named ? name != named->name : !selection.wants(name)) continue;
     if (auto finding = check_relation(name, input, generator, named ? &named->numbers : nullptr)) {
-      outcome.finding = finding;
+      if (finding->name == kInterrupted) outcome.interrupted = true;
+      else outcome.finding = finding;
       return outcome;
     }
   }

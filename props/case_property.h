@@ -43,8 +43,13 @@ struct CaseTags {
 /// in a tie, and adds the triangulated-faces relation.
 enum class Level { contract, strict };
 
+/// The name a relation's run reports when SIGINT or SIGTERM cut it short;
+/// check_case turns it into `interrupted`, never a finding.
+inline constexpr const char* kInterrupted = "interrupted";
+
 struct CaseOutcome {
   bool invalid = false;  ///< not a valid input (degenerate hull): discarded, not a finding
+  bool interrupted = false;  ///< SIGINT or SIGTERM cut the case short: no verdict
   std::string invalid_reason;
   std::optional<Finding> finding;
   CaseTags tags;

@@ -15,6 +15,7 @@
 
 #include "case_shrinker.h"
 #include "families.h"
+#include "harness/interruption.h"
 
 namespace mfz::props {
 namespace {
@@ -82,16 +83,11 @@ void record(Statistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
   if (o.tags.tie) stats.count("special", "axis tie");
 }
 
-// Set by SIGINT and SIGTERM: the run stops, writes what it has and prints
-// its summary.
-volatile std::sig_atomic_t interrupted = 0;
-extern "C" void on_interrupt(int) { interrupted = 1; }
-
 // The run's end: --seconds covers shrinking too.
 struct Deadline {
   std::optional<Clock::time_point> at;
   double left() const {
-    if (interrupted) return 0;
+    if (interrupted()) return 0;
     return at ? std::chrono::duration<double>(*at - Clock::now()).count() : INFINITY;
   }
 };
@@ -175,9 +171,9 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
   if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
   auto generator = open_session(options.generator, options.call_timeout, error);
   if (!generator) return std::nullopt;
-  interrupted = 0;
-  std::signal(SIGINT, on_interrupt);
-  std::signal(SIGTERM, on_interrupt);
+  // Ctrl-C and SIGTERM stop the run, which writes what it has and prints
+  // its summary.
+  catch_interruptions();
   log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << ", "
       << (options.selection.level == Level::strict ? "strict" : "contract") << " level (replay with --seed "
       << options.seed << ")\n";
@@ -196,6 +192,7 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
     const auto shrinkable = gen(random.split(), static_cast<int>(index % 100));
     const GeneratedCase generated = shrinkable.value();
     const CaseOutcome outcome = check_case(generated.file, *generator, options.selection);
+    if (outcome.interrupted) break;
     if (outcome.invalid) {
       ++result.invalid;
       continue;
@@ -234,9 +231,8 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
     }
   }
   result.seconds = since(started);
-  result.interrupted = interrupted != 0;
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
+  result.interrupted = interrupted();
+  release_interruptions();
   if (result.interrupted) log << "manifuzz check: interrupted; the summary so far:\n";
   log << "manifuzz check: " << result.cases << " cases in " << std::setprecision(3) << result.seconds << " s ("
       << static_cast<long long>(result.cases / std::max(result.seconds, 1e-9)) << " cases/s), " << result.invalid

@@ -34,6 +34,7 @@ std::optional<Finding> call(GeneratorSession& g, const Posed& p, mfz_manifold& o
   switch (g.generate(a, pa, b, pb, out, status, failure)) {
     case CallOutcome::crashed: return Finding{"crash", failure + " (in the " + relation + " run)"};
     case CallOutcome::hung: return Finding{"hang", failure + " (in the " + relation + " run)"};
+    case CallOutcome::interrupted: return Finding{kInterrupted, "(in the " + relation + " run)"};
     case CallOutcome::done: break;
   }
   if (status != 0) return Finding{"refused", "status " + std::to_string(status) + " in the " + relation + " run"};

@@ -128,6 +128,17 @@ sleep 1.5
 kill -INT "$harness"; wait "$harness"; status=$?
 check_that "Ctrl-C ends check with status 130" test "$status" -eq 130
 check_that "Ctrl-C prints the summary so far" grep -q 'interrupted; the summary so far' "$scratch/int.out"
+"$manifuzz" check --generator "$plugin_dir/libmfz_test_hanging.so" --call-timeout 60 --cases 1000000 --seed 3 \
+  --out "$scratch/term" >"$scratch/term.out" 2>&1 &
+harness=$!
+sleep 1.5
+workers=$(pgrep -P "$harness")
+kill -TERM "$harness"; wait "$harness"; status=$?
+check_that "SIGTERM during a hanging plugin call ends check with status 130" test "$status" -eq 130
+check_that "SIGTERM prints the summary so far" grep -q 'interrupted; the summary so far' "$scratch/term.out"
+alive=""
+for w in $workers; do gone "$w" || alive="$alive $w"; done
+check_that "SIGTERM leaves no worker behind (workers:$workers; alive:$alive)" test -z "$alive"
 
 # Findings are never lost or emptied.
 expect 2 'cannot (create|write)' -- "$manifuzz" check --cases 5 --out /proc/manifuzz-cannot-write

@@ -1,5 +1,7 @@
 #include "harness/generator_session.h"
 
+#include "harness/interruption.h"
+
 #include <poll.h>
 #include <sys/prctl.h>
 #include <signal.h>
@@ -169,8 +171,9 @@ class WorkerSession final : public GeneratorSession {
     put(request, &pb, sizeof pb);
     const bool sent = write_all(to_, request.data(), request.size());
     if (sent && !wait_readable(timeout_ms_)) {
-      failure = "no answer within " + std::to_string(timeout_ms_) + " ms";
       stop();
+      if (interrupted()) return CallOutcome::interrupted;
+      failure = "no answer within " + std::to_string(timeout_ms_) + " ms";
       return CallOutcome::hung;
     }
     if (sent && read_all(from_, &status, sizeof status) && read_all(from_, &out, sizeof out)) return CallOutcome::done;
@@ -183,7 +186,7 @@ class WorkerSession final : public GeneratorSession {
     pollfd p{from_, POLLIN, 0};
     int r;
     do r = poll(&p, 1, timeout_ms);
-    while (r < 0 && errno == EINTR);
+    while (r < 0 && errno == EINTR && !interrupted());
     return r > 0;
   }
 

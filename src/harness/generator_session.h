@@ -11,7 +11,9 @@
 
 namespace mfz {
 
-enum class CallOutcome { done, crashed, hung };
+/// interrupted: SIGINT or SIGTERM arrived while waiting for the answer
+/// (harness/interruption.h): no verdict, and the run stops.
+enum class CallOutcome { done, crashed, hung, interrupted };
 
 class GeneratorSession {
  public:
