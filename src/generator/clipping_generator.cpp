@@ -100,6 +100,24 @@ void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped
   }
 }
 
+// The tutorial's single-point branch is for curved shapes, whose "face" is one
+// point; a hull's faces have three or more vertices, so it only catches a
+// degenerate face handed in through the ABI: the support point is the contact.
+bool single_point_contact(const ClipFace& face_a, int support_a, const ClipFace& face_b, int support_b,
+                          const Vec3& n, mfz_manifold& out) {
+  if (face_a.hull->face_size(face_a.index) < 3) {
+    const Vec3 point = face_a.hull->world_vertex(support_a);
+    add_contact(out, point, point + out.penetration * n, out.penetration);
+    return true;
+  }
+  if (face_b.hull->face_size(face_b.index) < 3) {
+    const Vec3 point = face_b.hull->world_vertex(support_b);
+    add_contact(out, point - out.penetration * n, point, out.penetration);
+    return true;
+  }
+  return false;
+}
+
 bool more_parallel_is_reference_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b) {
   return std::abs(sat.normal.dot(face_a.normal)) < std::abs(sat.normal.dot(face_b.normal));
 }
@@ -174,19 +192,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   face_a.normal = a.world_face_normal(face_a.index);
   face_b.normal = b.world_face_normal(face_b.index);
 
-  // The tutorial's single-point branch is for curved shapes, whose "face" is one
-  // point; a hull's faces have three or more vertices, so here it only catches
-  // a degenerate face handed in through the ABI: the support point is the contact.
-  if (a.face_size(face_a.index) < 3) {
-    const Vec3 point = a.world_vertex(support_a);
-    add_contact(out, point, point + out.penetration * n, out.penetration);
-    return 0;
-  }
-  if (b.face_size(face_b.index) < 3) {
-    const Vec3 point = b.world_vertex(support_b);
-    add_contact(out, point - out.penetration * n, point, out.penetration);
-    return 0;
-  }
+  if (single_point_contact(face_a, support_a, face_b, support_b, n, out)) return 0;
 
   const bool flipped = steps.reference_is_b(sat, face_a, face_b);
   if (trace) trace->flipped = flipped;

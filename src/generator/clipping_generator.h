@@ -68,6 +68,12 @@ void face_loop(const PosedHull& hull, int face, ClipPolygon& out);
 /// F3: the closest points of the two supporting edges are the one contact.
 bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out);
 
+/// The tutorial's single-point branch: when a significant face has fewer than
+/// three vertices (only a malformed hull handed in through the ABI), the
+/// support point is the one contact. True when it applied.
+bool single_point_contact(const ClipFace& face_a, int support_a, const ClipFace& face_b, int support_b,
+                          const Vec3& n, mfz_manifold& out);
+
 /// The tutorial's rule: the significant face more parallel to n is the reference.
 bool more_parallel_is_reference_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
 /// F13: on a face axis, that face is the reference face; otherwise the tutorial's rule.

@@ -1,7 +1,6 @@
 #include "generator/baseline/tutorial_method.h"
 
 #include "generator/clip_polygon.h"
-#include "generator/contact_output.h"
 
 namespace mfz {
 namespace {
@@ -90,17 +89,7 @@ int32_t generate_tutorial_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   if (face_a.index < 0 || face_b.index < 0) return 1;  // a vertex in no face: not a hull
   face_a.normal = a.world_face_normal(face_a.index);
   face_b.normal = b.world_face_normal(face_b.index);
-  // The tutorial's single-point branch, for a "face" of one point.
-  if (a.face_size(face_a.index) < 3) {
-    const Vec3 point = a.world_vertex(support_a);
-    add_contact(out, point, point + out.penetration * n, out.penetration);
-    return 0;
-  }
-  if (b.face_size(face_b.index) < 3) {
-    const Vec3 point = b.world_vertex(support_b);
-    add_contact(out, point - out.penetration * n, point, out.penetration);
-    return 0;
-  }
+  if (single_point_contact(face_a, support_a, face_b, support_b, n, out)) return 0;
   const bool flipped = more_parallel_is_reference_b(sat, face_a, face_b);
   ClipFace& reference = flipped ? face_b : face_a;
   const ClipFace& incident = flipped ? face_a : face_b;
