@@ -13,8 +13,9 @@
 
 #include <unistd.h>
 
-#include "case_shrinker.h"
 #include "families.h"
+#include "finding_file.h"
+#include "finding_minimiser.h"
 #include "harness/interruption.h"
 
 namespace mfz::props {
@@ -22,9 +23,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Shrinking keeps a candidate whose error is at least this fraction of the
-/// original's (the same order of magnitude).
-constexpr double kSameOrder = 0.1;
 /// Budgets of the two shrinking stages (both also end at the run's deadline).
 constexpr double kShrinkTreeSeconds = 120;
 constexpr double kShrinkFileSeconds = 60;
@@ -119,50 +117,14 @@ rc::Shrinkable<GeneratedCase> shrink(rc::Shrinkable<GeneratedCase> failing, Find
 
 std::string write_case(const CheckOptions& options, const GeneratedCase& g, const Finding& f, long long index,
                        std::string& text, std::string& error) {
-  CaseFile file = g.file;
-  file.extensions.push_back("note found by: manifuzz check --generator " + options.generator + " --seed " +
-                            std::to_string(options.seed) +
-                            (options.selection.level == Level::strict ? " --strict" : "") + " (case " +
-                            std::to_string(index) + ", then shrunk)");
-  file.extensions.push_back("note violation: " + f.name + ": " + f.detail);
-  for (const std::string& line : replay_lines(f, options.selection.level)) file.extensions.push_back(line);
-  text = format_case(file);
-  std::error_code ec;
-  std::filesystem::create_directories(options.out_dir, ec);
-  const std::string path =
-      options.out_dir + "/" + f.name + "-" + std::to_string(std::hash<std::string>{}(text) % 100000000) + ".case";
-  if (!write_case_file(path, file, error)) return {};
-  return path;
+  const std::string found_by = "found by: manifuzz check --generator " + options.generator + " --seed " +
+                               std::to_string(options.seed) +
+                               (options.selection.level == Level::strict ? " --strict" : "") + " (case " +
+                               std::to_string(index) + ", then shrunk)";
+  return write_finding(options.out_dir, g.file, f, options.selection.level, {found_by}, text, error);
 }
 
 }  // namespace
-
-// A shrink that turned a 1.77 L error into a rounding-sized one had found a
-// different, lesser failure: the minimised case must fail by the same order.
-bool same_failure(const Finding& original, const Finding& candidate) {
-  if (candidate.name != original.name) return false;
-  return !(original.error > 0) || candidate.error >= kSameOrder * original.error;
-}
-
-bool prepare_out_dir(const std::string& dir, std::string& error) {
-  if (dir.empty()) {
-    error = "--out needs a folder name";
-    return false;
-  }
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) {
-    error = "cannot create --out folder " + quoted(dir, 4096) + ": " + ec.message();
-    return false;
-  }
-  const std::string probe = dir + "/.manifuzz-probe-" + std::to_string(getpid());
-  std::FILE* f = std::fopen(probe.c_str(), "wb");
-  const bool writable = f && std::fputs("probe\n", f) >= 0 && std::fclose(f) == 0;
-  if (!f) error = "cannot write into --out folder " + quoted(dir, 4096) + ": " + std::strerror(errno);
-  else if (!writable) error = "cannot write into --out folder " + quoted(dir, 4096);
-  std::remove(probe.c_str());
-  return writable;
-}
 
 std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error) {
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit is a write error to report, not a death
@@ -205,16 +167,12 @@ std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& 
       const Finding original = finding;
       const auto minimal = shrink(shrinkable, finding, *generator, options.selection, deadline, result.shrink_steps);
       GeneratedCase smallest = minimal.value();
-      result.shrink_steps += shrink_case_file(
-          smallest.file,
-          [&](const CaseFile& candidate) {
-            if (deadline.left() <= 0) return false;
-            const CaseOutcome o = check_case(candidate, *generator, options.selection);
-            if (o.invalid || !o.finding || !same_failure(original, *o.finding)) return false;
-            finding = *o.finding;
-            return true;
-          },
-          std::min(kShrinkFileSeconds, deadline.left()));
+      const Minimised smaller = minimise_finding(smallest.file, original, *generator, options.selection,
+                                                 std::min(kShrinkFileSeconds, deadline.left()),
+                                                 [&] { return deadline.left() <= 0; });
+      smallest.file = smaller.file;
+      result.shrink_steps += smaller.steps;
+      if (smaller.steps > 0) finding = smaller.finding;
       result.finding = finding;
       result.found_at_case = index;
       result.case_path = write_case(options, smallest, finding, index, result.minimised_text, error);

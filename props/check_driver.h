@@ -35,15 +35,6 @@ struct CheckResult {
   bool interrupted = false;  ///< stopped by SIGINT or SIGTERM
 };
 
-/// True when `candidate` shows the same failure as `original`: the same
-/// check, failing by at least a tenth of the original's error (when it has
-/// one), so that shrinking never trades a large error for a rounding-sized one.
-bool same_failure(const Finding& original, const Finding& candidate);
-
-/// Creates `dir` and writes a probe file into it; false and a one-line
-/// `error` when it cannot (an empty name included).
-bool prepare_out_dir(const std::string& dir, std::string& error);
-
 /// Runs the check; progress and statistics go to `log`. Returns nullopt and a
 /// one-line `error` when the generator cannot be loaded or the out folder
 /// cannot be written.

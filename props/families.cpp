@@ -5,6 +5,7 @@
 
 #include "generator/edge_arcs.h"
 #include "geometry/hull.h"
+#include "geometry/hull_cache.h"
 #include "geometry/posed_hull.h"
 
 namespace mfz::props {
@@ -204,21 +205,6 @@ Vec3 vertex_direction(const Hull& h, int index) {
   return d.isZero() ? Vec3::UnitZ() : Vec3(d.normalized());
 }
 
-const std::vector<Quat>& cube_symmetries() {
-  static const std::vector<Quat> all = [] {
-    std::vector<Quat> out;
-    const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-    for (const auto& perm : perms)
-      for (int signs = 0; signs < 8; ++signs) {
-        Mat3 m = Mat3::Zero();
-        for (int r = 0; r < 3; ++r) m(r, perm[r]) = (signs >> r & 1) ? -1 : 1;
-        if (m.determinant() > 0) out.emplace_back(m);
-      }
-    return out;
-  }();
-  return all;
-}
-
 const char* const kTiltNames[] = {"exact", "1e-15", "1e-12", "1e-9", "1e-6", "1e-3", "degrees"};
 const double kTilts[] = {0, 1e-15, 1e-12, 1e-9, 1e-6, 1e-3};
 
@@ -327,6 +313,21 @@ void place_along(const Placed& a, Placed& b, const Vec3& d, double overlap, doub
 }
 
 }  // namespace
+
+const std::vector<Quat>& cube_symmetries() {
+  static const std::vector<Quat> all = [] {
+    std::vector<Quat> out;
+    const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+    for (const auto& perm : perms)
+      for (int signs = 0; signs < 8; ++signs) {
+        Mat3 m = Mat3::Zero();
+        for (int r = 0; r < 3; ++r) m(r, perm[r]) = (signs >> r & 1) ? -1 : 1;
+        if (m.determinant() > 0) out.emplace_back(m);
+      }
+    return out;
+  }();
+  return all;
+}
 
 std::vector<Vec3> box_corners(double hx, double hy, double hz) {
   std::vector<Vec3> points;
@@ -441,7 +442,8 @@ rc::Gen<GeneratedCase> any_case() {
     scale_points(points_b, factors_b[s]);
     out.file.points_a = points_a;
     out.file.points_b = points_b;
-    HullBuild built_a = build_hull(points_a), built_b = build_hull(points_b);
+    HullBuild built_a = thread_hull_cache().build(points_a);
+    HullBuild built_b = thread_hull_cache().build(points_b);
     out.placement = placement_names()[pick(0, static_cast<int>(placement_names().size()) - 1)];
     if (!built_a.hull || !built_b.hull) {
       out.overlap = out.tilt = out.frame = "invalid";

@@ -27,6 +27,9 @@ struct GeneratedCase {
 /// The eight corners of the box [-hx, hx] x [-hy, hy] x [-hz, hz].
 std::vector<Vec3> box_corners(double hx, double hy, double hz);
 
+/// The 24 rotations that map a cube onto itself, exactly (entries 0 and +-1).
+const std::vector<Quat>& cube_symmetries();
+
 /// Every hull family's name, in the order the generator picks them from.
 const std::vector<std::string>& hull_family_names();
 /// Every placement family's name.

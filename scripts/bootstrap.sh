@@ -9,6 +9,7 @@ packages=(
   libclang-rt-14-dev libfuzzer-14-dev    # sanitizer and libFuzzer runtimes for clang
   libeigen3-dev libccd-dev libqhull-dev  # geometry, the libccd oracle, hulls (qhull_r)
   librapidcheck-dev libgtest-dev libbenchmark-dev
+  libssl-dev zip                         # SHA-1 names of fuzz inputs; seed corpus archives
   libbullet-dev libode-dev               # peer generators
 )
 

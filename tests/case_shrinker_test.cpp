@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "case_shrinker.h"
-#include "check_driver.h"
+#include "finding_minimiser.h"
 #include "geometry/hull.h"
 #include "test_support.h"
 

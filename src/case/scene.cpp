@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "geometry/hull_cache.h"
 #include "geometry/tolerances.h"
 
 namespace mfz {
@@ -36,9 +37,13 @@ double largest_coordinate(const std::vector<Vec3>& points) {
 }  // namespace
 
 SceneBuild make_scene(const CaseFile& c) {
-  HullBuild a = build_hull(c.points_a);
+  // A pose-only change (a fuzzer's mutation, a relation's motion, a
+  // shrinker's step) must not rebuild a hull: hulls come from a bounded
+  // cache, one per thread.
+  HullCache& hulls = thread_hull_cache();
+  HullBuild a = hulls.build(c.points_a);
   if (!a.hull) return {std::nullopt, "hull A: " + a.error};
-  HullBuild b = build_hull(c.points_b);
+  HullBuild b = hulls.build(c.points_b);
   if (!b.hull) return {std::nullopt, "hull B: " + b.error};
   for (const Pose* pose : {&c.pose_a, &c.pose_b})
     if (!pose->position.allFinite() || !pose->orientation.coeffs().allFinite() ||

@@ -47,5 +47,7 @@ std::optional<double> parse_seconds(const std::string& text);
 int replay_command(const std::vector<std::string>& words);
 int explain_command(const std::vector<std::string>& words);
 int check_command(const std::vector<std::string>& words);
+int promote_command(const std::vector<std::string>& words);
+int fuzz_command(const std::vector<std::string>& words);
 
 }  // namespace mfz::cli

@@ -17,6 +17,13 @@ constexpr const char* kUsage =
     "                                             --strict asks for one canonical answer in ties,\n"
     "                                             --only NAME checks one invariant or relation,\n"
     "                                             --call-timeout T limits each plugin call (s)\n"
+    "  fuzz    [--generator G] [--seconds T] [--jobs J] [--corpus DIR] [--out DIR] [--strict]\n"
+    "                                             libFuzzer on J cores; each distinct finding is minimised\n"
+    "                                             and written to --out; the corpus (default fuzz-corpus)\n"
+    "                                             grows and is resumed from; needs the clang build\n"
+    "  promote FILE [--name NAME] [--dir DIR] [--generator G] [--strict]\n"
+    "                                             minimise a finding (case file or fuzz artefact) into\n"
+    "                                             DIR/NAME.case (default corpus/regressions), a regression case\n"
     "G is 'builtin' (the default) or a path to a generator plugin .so.\n"
     "Exit status: 0 nothing found, 1 an invariant was violated, 2 usage, load or input error.\n";
 
@@ -33,6 +40,8 @@ int main(int argc, char** argv) {
   if (command == "replay") return mfz::cli::replay_command(words);
   if (command == "explain") return mfz::cli::explain_command(words);
   if (command == "check") return mfz::cli::check_command(words);
+  if (command == "fuzz") return mfz::cli::fuzz_command(words);
+  if (command == "promote") return mfz::cli::promote_command(words);
   std::cerr << "manifuzz: unknown command '" << command << "' (try manifuzz --help)\n";
   return mfz::cli::kExitInputError;
 }

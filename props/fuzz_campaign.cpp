@@ -1,0 +1,482 @@
+#include "fuzz_campaign.h"
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <map>
+#include <ostream>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "finding_file.h"
+#include "finding_minimiser.h"
+#include "fuzz_input.h"
+#include "geometric_mutator.h"
+#include "harness/interruption.h"
+#include "input_name.h"
+
+namespace mfz::props {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+/// libFuzzer's limits for one input: a hang is the plugin's call limit's
+/// business (the worker reports it as `hang`), so the engine's own timeout is
+/// only for the built-in, in process; memory per job is bounded.
+constexpr int kInputTimeoutSeconds = 30;
+constexpr int kMemoryLimitMb = 2048;
+/// How long libFuzzer's own minimiser may take before the case shrinker.
+constexpr double kEngineMinimiseSeconds = 10;
+/// How often the corpus and the artefacts are looked at.
+constexpr double kSyncEvery = 2;
+
+double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::vector<std::string> fuzzer_environment(const FuzzOptions& o) {
+  return {"MANIFUZZ_GENERATOR=" + o.generator, "MANIFUZZ_LEVEL=" + std::string(o.level == Level::strict ? "strict" : "contract"),
+          "MANIFUZZ_CALL_TIMEOUT=" + std::to_string(o.call_timeout)};
+}
+
+// ---- the engine's process ----
+
+// libFuzzer in its own process group (its fork-mode jobs with it), writing
+// to a log file, not a pipe: a pipe left unread while a finding is minimised
+// would stall the fuzzer.
+class EngineProcess {
+ public:
+  EngineProcess(const std::string& program, const std::vector<std::string>& arguments,
+                const std::vector<std::string>& environment, const std::string& log_path) {
+    pid_ = fork();
+    if (pid_ != 0) return;
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    const int log = open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int null = open("/dev/null", O_RDONLY);
+    if (log < 0 || null < 0) _exit(127);
+    dup2(null, 0);
+    dup2(log, 1);
+    dup2(log, 2);
+    for (const std::string& variable : environment) putenv(const_cast<char*>(variable.c_str()));
+    std::vector<char*> argv{const_cast<char*>(program.c_str())};
+    for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(program.c_str(), argv.data());
+    _exit(127);
+  }
+  EngineProcess(const EngineProcess&) = delete;
+  EngineProcess& operator=(const EngineProcess&) = delete;
+  ~EngineProcess() { stop(); }
+
+  bool started() const { return pid_ > 0; }
+  /// True while it runs; reaps it once it has ended.
+  bool running() {
+    if (pid_ <= 0 || exited_) return false;
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) exited_ = true;
+    return !exited_;
+  }
+  /// SIGINT (libFuzzer's clean stop, which ends its jobs), then SIGKILL to
+  /// the whole group if it has not ended within `grace` seconds.
+  void stop(double grace = 10) {
+    if (!running()) return;
+    kill(-pid_, SIGINT);
+    const auto asked = Clock::now();
+    while (running() && since(asked) < grace) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (running()) {
+      kill(-pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+      exited_ = true;
+    }
+    kill(-pid_, SIGKILL);  // any job left behind
+  }
+  /// Resident memory of the engine and its jobs, in MiB.
+  double resident_mb() const {
+    double pages = 0;
+    for (const auto& entry : fs::directory_iterator("/proc", fs::directory_options::skip_permission_denied)) {
+      std::ifstream stat(entry.path() / "stat");
+      std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
+      const size_t close = text.rfind(')');
+      if (close == std::string::npos) continue;
+      std::istringstream fields(text.substr(close + 2));
+      std::string field;
+      long long group = 0, rss = 0;
+      for (int k = 3; k <= 24 && fields >> field; ++k) {
+        if (k == 5) group = std::atoll(field.c_str());
+        if (k == 24) rss = std::atoll(field.c_str());
+      }
+      if (group == pid_) pages += static_cast<double>(rss);
+    }
+    return pages * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1 << 20);
+  }
+
+ private:
+  pid_t pid_ = -1;
+  bool exited_ = false;
+};
+
+// Runs the fuzzer program once to its end (libFuzzer's minimiser), output
+// discarded; false when it could not be run.
+bool run_to_end(const std::string& program, const std::vector<std::string>& arguments,
+                const std::vector<std::string>& environment, double seconds) {
+  EngineProcess p(program, arguments, environment, "/dev/null");
+  if (!p.started()) return false;
+  const auto started = Clock::now();
+  while (p.running()) {
+    if (since(started) > seconds + 10 || interrupted()) p.stop(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return true;
+}
+
+// ---- what libFuzzer says ----
+
+// New complete lines of a growing log file.
+class LogTail {
+ public:
+  explicit LogTail(std::string path) : path_(std::move(path)) {}
+  std::vector<std::string> new_lines() {
+    std::ifstream in(path_, std::ios::binary);
+    in.seekg(static_cast<std::streamoff>(offset_));
+    std::string chunk((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::vector<std::string> lines;
+    size_t start = 0;
+    for (size_t end; (end = chunk.find('\n', start)) != std::string::npos; start = end + 1)
+      lines.push_back(chunk.substr(start, end - start));
+    offset_ += start;
+    return lines;
+  }
+
+ private:
+  std::string path_;
+  size_t offset_ = 0;
+};
+
+struct EngineStats {
+  long long execs = 0;
+  int coverage = 0, features = 0, corpus = 0;
+};
+
+// A fork-mode status line: "#60029: cov: 10 ft: 8 corp: 5 exec/s 0 ...".
+void read_status(const std::string& line, EngineStats& stats) {
+  if (line.empty() || line[0] != '#') return;
+  long long execs = 0;
+  int cov = 0, ft = 0, corp = 0;
+  if (std::sscanf(line.c_str(), "#%lld%*[: A-Z]cov: %d ft: %d corp: %d", &execs, &cov, &ft, &corp) == 4) {
+    stats.execs = std::max(stats.execs, execs);
+    stats.coverage = cov;
+    stats.features = ft;
+    stats.corpus = corp;
+  }
+}
+
+// ---- the user's corpus ----
+
+bool is_input_name(const std::string& name) {
+  return name.size() == 40 && std::all_of(name.begin(), name.end(), [](char c) { return std::isxdigit(c); });
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {(std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()};
+}
+
+// Copies libFuzzer's new inputs into the corpus. An input is copied only
+// when its bytes hash to its name (libFuzzer names inputs by their SHA-1,
+// so a file caught mid-write is left for the next pass), and it lands under
+// its name by a rename: a campaign killed at any moment leaves only whole
+// inputs in the corpus.
+int sync_corpus(const fs::path& from, const fs::path& corpus, std::set<std::string>& known) {
+  int added = 0;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(from, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (!is_input_name(name) || known.count(name)) continue;
+    const std::string bytes = read_bytes(entry.path());
+    if (input_name(bytes) != name) continue;
+    const fs::path temporary = corpus / (".incoming-" + name);
+    {
+      std::ofstream out(temporary, std::ios::binary);
+      out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+      if (!out.flush()) continue;
+    }
+    fs::rename(temporary, corpus / name, ec);
+    if (ec) continue;
+    known.insert(name);
+    ++added;
+  }
+  return added;
+}
+
+std::set<std::string> corpus_names(const fs::path& corpus) {
+  std::set<std::string> names;
+  for (const auto& entry : fs::directory_iterator(corpus)) names.insert(entry.path().filename().string());
+  return names;
+}
+
+// A corpus folder that is empty starts from the seed inputs.
+void seed_if_empty(const fs::path& corpus) {
+  if (!fs::is_empty(corpus)) return;
+  for (const auto& [name, bytes] : seed_inputs()) {
+    std::ofstream out(corpus / name, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  }
+}
+
+// ---- findings ----
+
+// The artefact's kind from libFuzzer's prefix: crash-, timeout-, oom-, leak-.
+std::string artefact_kind(const std::string& name) {
+  for (const char* kind : {"crash", "timeout", "oom", "leak", "slow-unit"})
+    if (name.rfind(std::string(kind) + "-", 0) == 0) return kind;
+  return {};
+}
+
+class Campaign {
+ public:
+  Campaign(const FuzzOptions& o, GeneratorSession& g, const fs::path& work, std::ostream& log, std::ostream& out)
+      : options_(o), generator_(g), work_(work), log_(log), findings_out_(out) {}
+
+  // Looks at libFuzzer's new artefacts; a finding not seen before is
+  // minimised and written.
+  void scan_artefacts(double elapsed, FuzzResult& result) {
+    std::error_code ec;
+    std::vector<fs::path> fresh;
+    for (const auto& entry : fs::directory_iterator(work_ / "artefacts", ec)) {
+      const std::string name = entry.path().filename().string();
+      if (artefact_kind(name).empty() || entry.path().extension() == ".case" || seen_.count(name)) continue;
+      fresh.push_back(entry.path());
+    }
+    std::sort(fresh.begin(), fresh.end());
+    for (const fs::path& artefact : fresh) {
+      seen_.insert(artefact.filename().string());
+      take(artefact, elapsed, result);
+    }
+  }
+
+ private:
+  void take(const fs::path& artefact, double elapsed, FuzzResult& result) {
+    const std::string kind = artefact_kind(artefact.filename().string());
+    const std::string bytes = read_bytes(artefact);
+    const auto decoded = decode_fuzz_input(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    if (!decoded) return;  // not a case: nothing this harness can show
+    FuzzFinding found{kind == "timeout" ? "hang" : (kind == "oom" ? "out-of-memory" : "crash"), kind, {}, 1, elapsed};
+    std::optional<Finding> finding;
+    // A violation is replayed here (the generator returned on it, so the
+    // call is safe in process); a crash or a hang of the built-in is not.
+    if (fs::exists(artefact.string() + ".case") || options_.generator != "builtin") {
+      const CaseOutcome o = check_case(decoded->file, generator_, {{}, options_.level});
+      if (o.finding) {
+        finding = o.finding;
+        found.name = o.finding->name;
+        found.kind = o.tags.contact_kind.empty() ? kind : o.tags.contact_kind;
+        found.error = o.finding->error;
+        found.tolerance = o.finding->tolerance;
+      }
+    }
+    const std::string key = found.name + " / " + found.kind;
+    if (const auto known = index_.find(key); known != index_.end()) {
+      ++result.findings[known->second].artefacts;
+      return;
+    }
+    CaseFile smallest = decoded->file;
+    if (finding) {
+      smallest = engine_minimised(artefact, *finding).value_or(smallest);
+      const Minimised m = minimise_finding(smallest, *finding, generator_, {{}, options_.level},
+                                           options_.minimise_seconds, [] { return interrupted(); });
+      smallest = m.file;
+      finding = m.finding;
+    } else {
+      finding = Finding{found.name, "libFuzzer's " + kind + " artefact " + artefact.filename().string()};
+    }
+    std::ostringstream how;
+    how << "found by: manifuzz fuzz --generator " << options_.generator
+        << (options_.level == Level::strict ? " --strict" : "") << " (after " << static_cast<long long>(elapsed)
+        << " s, input " << artefact.filename().string() << ", then minimised)";
+    std::string text, error;
+    found.case_path = write_finding(options_.out_dir, smallest, *finding, options_.level, {how.str()}, text, error);
+    if (found.case_path.empty()) {
+      log_ << "manifuzz fuzz: " << error << "\n";
+      return;
+    }
+    // The raw input too: what libFuzzer itself replays.
+    std::error_code ec;
+    fs::copy_file(artefact, found.case_path.substr(0, found.case_path.size() - 5) + ".input",
+                  fs::copy_options::overwrite_existing, ec);
+    index_[key] = result.findings.size();
+    result.findings.push_back(found);
+    log_ << "found " << found.name << " (" << found.kind << ") after " << static_cast<long long>(elapsed) << " s: "
+         << finding->detail << "\n";
+    findings_out_ << "VIOLATION " << found.name << " " << found.case_path << std::endl;
+  }
+
+  // libFuzzer's minimiser, kept only when its smallest input still fails
+  // the same check by the same order.
+  std::optional<CaseFile> engine_minimised(const fs::path& artefact, const Finding& original) {
+    const fs::path smallest = work_ / ("minimised-" + artefact.filename().string());
+    const fs::path scratch = work_ / "minimising";
+    fs::create_directories(scratch);
+    const std::vector<std::string> arguments = {
+        "-minimize_crash=1", "-max_total_time=" + std::to_string(static_cast<int>(kEngineMinimiseSeconds)),
+        "-exact_artifact_path=" + smallest.string(), "-artifact_prefix=" + scratch.string() + "/",
+        "-timeout=" + std::to_string(kInputTimeoutSeconds), artefact.string()};
+    if (!run_to_end(options_.fuzzer, arguments, fuzzer_environment(options_), kEngineMinimiseSeconds)) return {};
+    const std::string bytes = read_bytes(smallest);
+    const auto decoded = decode_fuzz_input(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+    if (!decoded) return {};
+    const CaseOutcome o = check_case(decoded->file, generator_, {{}, options_.level});
+    if (o.invalid || !o.finding || !same_failure(original, *o.finding)) return {};
+    return decoded->file;
+  }
+
+  const FuzzOptions& options_;
+  GeneratorSession& generator_;
+  fs::path work_;
+  std::ostream& log_;
+  std::ostream& findings_out_;
+  std::set<std::string> seen_;
+  std::map<std::string, size_t> index_;
+};
+
+// ---- the campaign's folders ----
+
+// The work folder of this run, inside --out; those of runs that died
+// (SIGKILL) are removed first.
+fs::path make_work_folder(const fs::path& out) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(out, ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind(".fuzz-", 0) != 0) continue;
+    const pid_t owner = static_cast<pid_t>(std::atoll(name.c_str() + 6));
+    if (owner > 0 && kill(owner, 0) != 0 && errno == ESRCH) fs::remove_all(entry.path(), ec);
+  }
+  const fs::path work = out / (".fuzz-" + std::to_string(getpid()));
+  fs::remove_all(work, ec);
+  fs::create_directories(work / "new");
+  fs::create_directories(work / "artefacts");
+  return work;
+}
+
+void print_progress(std::ostream& log, double elapsed, const EngineStats& s, const FuzzResult& r, double rss_mb) {
+  int artefacts = 0;
+  for (const FuzzFinding& f : r.findings) artefacts += f.artefacts;
+  log << "  " << std::setw(6) << static_cast<long long>(elapsed) << " s  " << s.execs << " execs, "
+      << static_cast<long long>(s.execs / std::max(elapsed, 1e-9)) << " exec/s, cov " << s.coverage << " ft "
+      << s.features << ", corpus " << r.corpus_inputs << " (+" << r.corpus_added << "), findings "
+      << r.findings.size() << " (" << artefacts << " artefacts), rss " << static_cast<long long>(rss_mb) << " MiB"
+      << std::endl;
+}
+
+void print_summary(std::ostream& log, const FuzzOptions& o, const FuzzResult& r) {
+  log << "manifuzz fuzz: " << r.execs << " execs in " << std::setprecision(3) << r.seconds << " s ("
+      << static_cast<long long>(r.execs / std::max(r.seconds, 1e-9)) << " exec/s on " << o.jobs << " job"
+      << (o.jobs > 1 ? "s" : "") << "), coverage " << r.coverage << " ft " << r.features << ", corpus "
+      << r.corpus_inputs << " inputs (" << r.corpus_added << " new) in " << o.corpus_dir << ", "
+      << r.findings.size() << " distinct finding" << (r.findings.size() == 1 ? "" : "s") << "\n";
+  for (const FuzzFinding& f : r.findings)
+    log << "  " << f.name << " (" << f.kind << "): " << f.artefacts << " artefact" << (f.artefacts == 1 ? "" : "s")
+        << ", first after " << static_cast<long long>(f.after_seconds) << " s: " << f.case_path << "\n";
+}
+
+}  // namespace
+
+std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log, std::ostream& findings_out,
+                                   std::string& error) {
+  // 1. Everything that can fail fails before the fuzzer starts.
+  if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
+  std::error_code ec;
+  fs::create_directories(options.corpus_dir, ec);
+  if (ec || !fs::is_directory(options.corpus_dir)) {
+    error = "cannot create --corpus folder " + quoted(options.corpus_dir, 4096);
+    return std::nullopt;
+  }
+  auto generator = open_session(options.generator, options.call_timeout, error);
+  if (!generator) return std::nullopt;
+  seed_if_empty(options.corpus_dir);
+  const fs::path work = make_work_folder(options.out_dir);
+
+  // 2. libFuzzer in fork mode: new inputs into the work folder, the user's
+  // corpus read from where it is, every crash, hang and OOM kept going.
+  std::vector<std::string> arguments = {
+      "-fork=" + std::to_string(options.jobs), "-ignore_crashes=1", "-ignore_timeouts=1", "-ignore_ooms=1",
+      "-artifact_prefix=" + (work / "artefacts").string() + "/", "-timeout=" + std::to_string(kInputTimeoutSeconds),
+      "-rss_limit_mb=" + std::to_string(kMemoryLimitMb), "-max_len=" + std::to_string(fuzz_input_size(kFuzzMaxPoints, kFuzzMaxPoints)),
+      "-print_final_stats=1"};
+  if (options.seconds) arguments.push_back("-max_total_time=" + std::to_string(std::max(1LL, std::llround(*options.seconds))));
+  arguments.push_back((work / "new").string());
+  arguments.push_back(options.corpus_dir);
+  catch_interruptions();
+  log << "manifuzz fuzz: generator " << generator->name() << ", " << options.jobs << " job"
+      << (options.jobs > 1 ? "s" : "") << ", corpus " << options.corpus_dir << ", findings into " << options.out_dir
+      << (options.seconds ? "" : "; Ctrl-C stops") << "\n";
+  EngineProcess engine(options.fuzzer, arguments, fuzzer_environment(options), (work / "engine.log").string());
+  if (!engine.started()) {
+    release_interruptions();
+    error = "cannot start " + quoted(options.fuzzer, 4096);
+    return std::nullopt;
+  }
+
+  // 3. Watch: the engine's status, the corpus, the artefacts.
+  LogTail tail((work / "engine.log").string());
+  EngineStats stats;
+  FuzzResult result;
+  std::set<std::string> known = corpus_names(options.corpus_dir);
+  result.corpus_inputs = static_cast<int>(known.size());
+  Campaign campaign(options, *generator, work, log, findings_out);
+  const auto started = Clock::now();
+  double last_sync = 0, last_progress = 0;
+  bool engine_failed_to_start = false;
+  while (engine.running() && !interrupted()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (const std::string& line : tail.new_lines()) {
+      read_status(line, stats);
+      if (line.find("ERROR: ") != std::string::npos && stats.execs == 0) engine_failed_to_start = true;
+    }
+    const double now = since(started);
+    if (now - last_sync >= kSyncEvery) {
+      last_sync = now;
+      result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
+      result.corpus_inputs = static_cast<int>(known.size());
+      campaign.scan_artefacts(now, result);
+    }
+    if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
+      last_progress = now;
+      print_progress(log, now, stats, result, engine.resident_mb());
+    }
+  }
+
+  // 4. Stop cleanly, keep what was found, say what happened.
+  result.interrupted = interrupted();
+  engine.stop();
+  for (const std::string& line : tail.new_lines()) read_status(line, stats);
+  result.seconds = since(started);
+  result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
+  result.corpus_inputs = static_cast<int>(known.size());
+  if (!result.interrupted) campaign.scan_artefacts(result.seconds, result);
+  release_interruptions();
+  result.execs = stats.execs;
+  result.coverage = stats.coverage;
+  result.features = stats.features;
+  if (engine_failed_to_start && result.execs == 0) {
+    error = "the fuzzer stopped before fuzzing; its log: " + read_bytes(work / "engine.log").substr(0, 2000);
+    return std::nullopt;
+  }
+  if (result.interrupted) log << "manifuzz fuzz: interrupted; the summary so far:\n";
+  print_summary(log, options, result);
+  fs::remove_all(work, ec);
+  return result;
+}
+
+}  // namespace mfz::props

@@ -1,0 +1,55 @@
+#pragma once
+/// \file
+/// `manifuzz fuzz`: a campaign of libFuzzer in fork mode on J cores, driven
+/// from outside. libFuzzer finds; the campaign keeps the user's corpus whole
+/// (new inputs are copied in through a temporary name, and only once their
+/// bytes match their name), reports progress, and turns each distinct
+/// finding into a minimised case file while the fuzzer goes on.
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "case_property.h"
+
+namespace mfz::props {
+
+struct FuzzOptions {
+  std::string generator = "builtin";
+  std::string fuzzer;                ///< the manifold_fuzzer program
+  std::optional<double> seconds;     ///< of fuzzing; none: until Ctrl-C
+  int jobs = 1;
+  std::string corpus_dir = "fuzz-corpus";
+  std::string out_dir = "failures";
+  double call_timeout = 5;
+  double progress_every = 5;         ///< seconds between progress lines
+  double minimise_seconds = 30;      ///< per distinct finding (libFuzzer's, then the case shrinker)
+  Level level = Level::contract;
+};
+
+/// One distinct finding: a check and the kind of case it failed on.
+struct FuzzFinding {
+  std::string name;       ///< the check, or crash, hang, out-of-memory
+  std::string kind;       ///< the contact kind (face-face, edge-edge, ...), or the artefact's kind
+  std::string case_path;  ///< the minimised case file
+  int artefacts = 0;      ///< how many of libFuzzer's artefacts showed it
+  double after_seconds = 0;
+  double error = 0, tolerance = 0;
+};
+
+struct FuzzResult {
+  long long execs = 0;
+  int coverage = 0, features = 0;
+  int corpus_inputs = 0, corpus_added = 0;
+  double seconds = 0;
+  std::vector<FuzzFinding> findings;
+  bool interrupted = false;
+};
+
+/// Runs the campaign; progress and the summary go to `log`, one
+/// `VIOLATION <name> <file>` line per distinct finding to `findings_out` as
+/// it is written. nullopt and a one-line `error` when it cannot start.
+std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log, std::ostream& findings_out,
+                                   std::string& error);
+
+}  // namespace mfz::props
