@@ -105,7 +105,10 @@ class EngineProcess {
   /// Resident memory of the engine and its jobs, in MiB.
   double resident_mb() const {
     double pages = 0;
-    for (const auto& entry : fs::directory_iterator("/proc", fs::directory_options::skip_permission_denied)) {
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator("/proc", fs::directory_options::skip_permission_denied, ec)) {
+      const std::string pid = entry.path().filename().string();
+      if (pid.empty() || !std::all_of(pid.begin(), pid.end(), [](char c) { return std::isdigit(c); })) continue;
       std::ifstream stat(entry.path() / "stat");
       std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
       const size_t close = text.rfind(')');
