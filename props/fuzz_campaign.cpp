@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <ostream>
 #include <set>
@@ -84,8 +85,7 @@ class EngineProcess {
   /// True while it runs; reaps it once it has ended.
   bool running() {
     if (pid_ <= 0 || exited_) return false;
-    int status = 0;
-    if (waitpid(pid_, &status, WNOHANG) == pid_) exited_ = true;
+    if (waitpid(pid_, &status_, WNOHANG) == pid_) exited_ = true;
     return !exited_;
   }
   /// SIGINT (libFuzzer's clean stop, which ends its jobs), then SIGKILL to
@@ -97,11 +97,13 @@ class EngineProcess {
     while (running() && since(asked) < grace) std::this_thread::sleep_for(std::chrono::milliseconds(50));
     if (running()) {
       kill(-pid_, SIGKILL);
-      waitpid(pid_, nullptr, 0);
+      waitpid(pid_, &status_, 0);
       exited_ = true;
     }
     kill(-pid_, SIGKILL);  // any job left behind
   }
+  /// The exit status once it has ended by itself (not stopped), else -1.
+  int exit_status() const { return exited_ && WIFEXITED(status_) ? WEXITSTATUS(status_) : -1; }
   /// Resident memory of the engine and its jobs, in MiB.
   double resident_mb() const {
     double pages = 0;
@@ -128,6 +130,7 @@ class EngineProcess {
  private:
   pid_t pid_ = -1;
   bool exited_ = false;
+  int status_ = 0;
 };
 
 // Runs the fuzzer program once to its end (libFuzzer's minimiser), output
@@ -229,8 +232,12 @@ std::set<std::string> corpus_names(const fs::path& corpus) {
   return names;
 }
 
-// A corpus folder that is empty starts from the seed inputs.
+// A corpus folder that is empty starts from the seed inputs. Inputs a
+// killed campaign left half copied (never under an input's name) go first.
 void seed_if_empty(const fs::path& corpus) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(corpus, ec))
+    if (entry.path().filename().string().rfind(".incoming-", 0) == 0) fs::remove(entry.path(), ec);
   if (!fs::is_empty(corpus)) return;
   for (const auto& [name, bytes] : seed_inputs()) {
     std::ofstream out(corpus / name, std::ios::binary);
@@ -250,7 +257,7 @@ std::string artefact_kind(const std::string& name) {
 class Campaign {
  public:
   Campaign(const FuzzOptions& o, GeneratorSession& g, const fs::path& work, std::ostream& log, std::ostream& out)
-      : options_(o), generator_(g), work_(work), log_(log), findings_out_(out) {}
+      : options_(o), generator_(g), work_(work), log_(log), findings_out_(out), started_(Clock::now()) {}
 
   // Looks at libFuzzer's new artefacts; a finding not seen before is
   // minimised and written.
@@ -295,19 +302,24 @@ class Campaign {
       return;
     }
     CaseFile smallest = decoded->file;
-    if (finding) {
-      smallest = engine_minimised(artefact, *finding).value_or(smallest);
+    std::string minimised = "then minimised";
+    if (finding && time_left() > 1) {
+      smallest = engine_minimised(artefact, *finding, std::min(kEngineMinimiseSeconds, time_left() / 2))
+                     .value_or(smallest);
       const Minimised m = minimise_finding(smallest, *finding, generator_, {{}, options_.level},
-                                           options_.minimise_seconds, [] { return interrupted(); });
+                                           std::min(options_.minimise_seconds, time_left()),
+                                           [] { return interrupted(); });
       smallest = m.file;
       finding = m.finding;
+    } else if (finding) {
+      minimised = "not minimised: --seconds was up";
     } else {
       finding = Finding{found.name, "libFuzzer's " + kind + " artefact " + artefact.filename().string()};
     }
     std::ostringstream how;
     how << "found by: manifuzz fuzz --generator " << options_.generator
         << (options_.level == Level::strict ? " --strict" : "") << " (after " << static_cast<long long>(elapsed)
-        << " s, input " << artefact.filename().string() << ", then minimised)";
+        << " s, input " << artefact.filename().string() << ", " << minimised << ")";
     std::string text, error;
     found.case_path = write_finding(options_.out_dir, smallest, *finding, options_.level, {how.str()}, text, error);
     if (found.case_path.empty()) {
@@ -327,15 +339,20 @@ class Campaign {
 
   // libFuzzer's minimiser, kept only when its smallest input still fails
   // the same check by the same order.
-  std::optional<CaseFile> engine_minimised(const fs::path& artefact, const Finding& original) {
+  // The time --seconds leaves (minimising included); unbounded without it.
+  double time_left() const {
+    return options_.seconds ? *options_.seconds - since(started_) : std::numeric_limits<double>::infinity();
+  }
+
+  std::optional<CaseFile> engine_minimised(const fs::path& artefact, const Finding& original, double seconds) {
     const fs::path smallest = work_ / ("minimised-" + artefact.filename().string());
     const fs::path scratch = work_ / "minimising";
     fs::create_directories(scratch);
     const std::vector<std::string> arguments = {
-        "-minimize_crash=1", "-max_total_time=" + std::to_string(static_cast<int>(kEngineMinimiseSeconds)),
+        "-minimize_crash=1", "-max_total_time=" + std::to_string(std::max(1, static_cast<int>(seconds))),
         "-exact_artifact_path=" + smallest.string(), "-artifact_prefix=" + scratch.string() + "/",
         "-timeout=" + std::to_string(kInputTimeoutSeconds), artefact.string()};
-    if (!run_to_end(options_.fuzzer, arguments, fuzzer_environment(options_), kEngineMinimiseSeconds)) return {};
+    if (!run_to_end(options_.fuzzer, arguments, fuzzer_environment(options_), seconds)) return {};
     const std::string bytes = read_bytes(smallest);
     const auto decoded = decode_fuzz_input(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
     if (!decoded) return {};
@@ -351,6 +368,7 @@ class Campaign {
   std::ostream& findings_out_;
   std::set<std::string> seen_;
   std::map<std::string, size_t> index_;
+  Clock::time_point started_;
 };
 
 // ---- the campaign's folders ----
@@ -437,15 +455,17 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log
   FuzzResult result;
   std::set<std::string> known = corpus_names(options.corpus_dir);
   result.corpus_inputs = static_cast<int>(known.size());
+  log << "  resuming from " << known.size() << " inputs in " << options.corpus_dir << "\n";
   Campaign campaign(options, *generator, work, log, findings_out);
   const auto started = Clock::now();
   double last_sync = 0, last_progress = 0;
-  bool engine_failed_to_start = false;
+  std::string first_error;
   while (engine.running() && !interrupted()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
     for (const std::string& line : tail.new_lines()) {
       read_status(line, stats);
-      if (line.find("ERROR: ") != std::string::npos && stats.execs == 0) engine_failed_to_start = true;
+      if (first_error.empty() && (line.find("ERROR") != std::string::npos || line.rfind("manifold_fuzzer:", 0) == 0))
+        first_error = line;
     }
     const double now = since(started);
     if (now - last_sync >= kSyncEvery) {
@@ -462,6 +482,9 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log
 
   // 4. Stop cleanly, keep what was found, say what happened.
   result.interrupted = interrupted();
+  // An engine that ended by itself, with an error, before fuzzing: not a
+  // campaign that found nothing.
+  const int ended_with = engine.exit_status();
   engine.stop();
   for (const std::string& line : tail.new_lines()) read_status(line, stats);
   result.seconds = since(started);
@@ -472,8 +495,10 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log
   result.execs = stats.execs;
   result.coverage = stats.coverage;
   result.features = stats.features;
-  if (engine_failed_to_start && result.execs == 0) {
-    error = "the fuzzer stopped before fuzzing; its log: " + read_bytes(work / "engine.log").substr(0, 2000);
+  if (result.execs == 0 && !result.interrupted && ended_with != 0) {
+    error = quoted(options.fuzzer, 4096) + " stopped before fuzzing (exit " + std::to_string(ended_with) + ")" +
+            (first_error.empty() ? "" : ": " + printable(first_error, 300));
+    fs::remove_all(work, ec);
     return std::nullopt;
   }
   if (result.interrupted) log << "manifuzz fuzz: interrupted; the summary so far:\n";

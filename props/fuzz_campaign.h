@@ -17,7 +17,7 @@ namespace mfz::props {
 struct FuzzOptions {
   std::string generator = "builtin";
   std::string fuzzer;                ///< the manifold_fuzzer program
-  std::optional<double> seconds;     ///< of fuzzing; none: until Ctrl-C
+  std::optional<double> seconds;     ///< of the whole run, minimising included; none: until Ctrl-C
   int jobs = 1;
   std::string corpus_dir = "fuzz-corpus";
   std::string out_dir = "failures";

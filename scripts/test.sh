@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Builds and runs every test: g++ (the default preset), clang++, and g++ with
-# ASan + UBSan. Properties run a bounded number of cases here.
+# Builds and runs every test: g++ (the default preset), clang++ (with the
+# libFuzzer targets and `manifuzz fuzz`), and g++ with ASan + UBSan; then
+# ClusterFuzzLite's build.sh with ASan + UBSan, each target run for a few
+# seconds. Properties run a bounded number of cases here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/bootstrap.sh
@@ -10,3 +12,5 @@ for preset in default clang sanitize; do
   cmake --build --preset "$preset"
   ctest --preset "$preset"
 done
+echo "== clusterfuzzlite build.sh"
+tests/clusterfuzzlite_build_test.sh

@@ -5,6 +5,7 @@
 // case still pins what it was kept for. Regression cases are never deleted.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 
 #include "case_property.h"
@@ -13,9 +14,16 @@
 namespace mfz {
 namespace {
 
+// MANIFUZZ_REGRESSIONS_DIR points the test at another folder of cases
+// (a promoted case in tests/fuzz_cli_test.sh).
+std::string regressions_dir() {
+  const char* other = std::getenv("MANIFUZZ_REGRESSIONS_DIR");
+  return other && *other ? other : test::corpus_path("regressions");
+}
+
 std::vector<std::string> regression_cases() {
   std::vector<std::string> files;
-  for (const auto& entry : std::filesystem::directory_iterator(test::corpus_path("regressions")))
+  for (const auto& entry : std::filesystem::directory_iterator(regressions_dir()))
     if (entry.path().extension() == ".case") files.push_back(entry.path().string());
   std::sort(files.begin(), files.end());
   return files;
