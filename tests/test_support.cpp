@@ -1,5 +1,9 @@
 #include "test_support.h"
 
+#include <filesystem>
+
+#include <unistd.h>
+
 #include "families.h"
 
 namespace mfz::test {
@@ -30,5 +34,9 @@ CaseRun run_builtin(const CaseFile& c) {
 }
 
 std::string corpus_path(const std::string& name) { return std::string(MANIFUZZ_SOURCE_DIR) + "/corpus/" + name; }
+
+std::string scratch_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() / (name + "-" + std::to_string(getpid()))).string();
+}
 
 }  // namespace mfz::test

@@ -22,6 +22,8 @@ CaseFile make_case(std::vector<Vec3> a, const Pose& pose_a, std::vector<Vec3> b,
 CaseRun run_builtin(const CaseFile& c);
 /// The path of a file in the source tree's corpus/.
 std::string corpus_path(const std::string& name);
+/// A path for a scratch file of this test process (in the system's temporary folder).
+std::string scratch_path(const std::string& name);
 
 }  // namespace mfz::test
 
