@@ -57,6 +57,10 @@ expect 0 'verdict pass' -- "$manifuzz" replay --generator "$plugin_dir/libmanifu
 expect 1 'VIOLATION crash ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --cases 200 --seed 3 --out "$scratch/crash" --quiet
 expect 1 'VIOLATION hang ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_hanging.so" --cases 200 --seed 3 --out "$scratch/hang" --call-timeout 0.2 --quiet
 expect 0 'manifuzz check: 50 cases' -- "$manifuzz" check --cases 50 --seed 3 --out "$scratch/none"
+# --jobs: the cases shared out over J streams; the first finding is the run's.
+expect 0 'manifuzz check: 2 jobs, 60 cases' -- "$manifuzz" check --cases 60 --jobs 2 --seed 3 --out "$scratch/none"
+expect 1 'VIOLATION crash ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --jobs 2 --cases 200 --seed 3 --out "$scratch/crash" --quiet
+expect_one_line_error '--jobs takes a whole number' -- "$manifuzz" check --jobs 0
 expect 2 'not a manifuzz generator' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_missing_symbol.so" --cases 5
 expect 2 '--cases takes' -- "$manifuzz" check --cases -3
 expect 2 '--only takes an invariant or relation name' -- "$manifuzz" check --only on-surfce --cases 5

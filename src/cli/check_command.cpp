@@ -1,11 +1,19 @@
-// manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--out DIR]
+// manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR]
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <random>
+#include <sstream>
+#include <thread>
+
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "check_driver.h"
+#include "finding_file.h"
 #include "cli/arguments.h"
 
 namespace mfz::cli {
@@ -13,14 +21,115 @@ namespace mfz::cli {
 /// Without --cases or --seconds the check runs this many cases: the main job's budget.
 constexpr long long kDefaultCases = 20000;
 
+namespace {
+
+/// What one job of `check --jobs` tells the parent on its stdout, besides
+/// its VIOLATION line: "cases N seconds T".
+constexpr const char* kJobTally = "cases ";
+
+// One job: the check on its own stream (seed + job), its log into a file
+// (the first job's to the terminal, for the progress lines).
+int run_one_job(props::CheckOptions options, int job, int jobs, int tally_fd) {
+  options.seed += static_cast<uint64_t>(job);
+  if (options.cases) options.cases = (*options.cases + jobs - 1 - job) / jobs;
+  if (job > 0) options.progress_every = 0;
+  std::ostringstream quiet;
+  std::ostream& log = job == 0 ? std::cerr : static_cast<std::ostream&>(quiet);
+  std::string error;
+  const auto result = props::run_check(options, log, error);
+  std::string tally;
+  int status = kExitClean;
+  if (!result) {
+    std::cerr << "manifuzz check: job " << job + 1 << ": " << error << "\n";
+    status = kExitInputError;
+  } else {
+    tally = std::string(kJobTally) + std::to_string(result->cases) + " seconds " + std::to_string(result->seconds) + "\n";
+    if (result->finding) {
+      if (job > 0) std::cerr << quiet.str();
+      tally += "VIOLATION " + result->finding->name + " " + result->case_path + "\n";
+      status = kExitViolation;
+    } else if (result->interrupted) {
+      status = kExitInterrupted;
+    }
+  }
+  if (write(tally_fd, tally.data(), tally.size()) < 0) status = kExitInputError;
+  return status;
+}
+
+// `check --jobs J`: J processes, each on its own stream (seeds S .. S+J-1),
+// the cases shared out; the first finding stops the others (SIGTERM: they
+// end with their summary) and is the run's.
+int run_jobs(const props::CheckOptions& options, int jobs) {
+  std::vector<pid_t> children;
+  std::vector<int> tallies;
+  std::cerr << "manifuzz check: " << jobs << " jobs on seeds " << options.seed << " to " << options.seed + jobs - 1
+            << " (replay one with --seed S and no --jobs)\n";
+  std::cerr.flush();
+  for (int job = 0; job < jobs; ++job) {
+    int fds[2];
+    if (pipe(fds) != 0) return kExitInputError;
+    const pid_t pid = fork();
+    if (pid == 0) {
+      close(fds[0]);
+      _exit(run_one_job(options, job, jobs, fds[1]));
+    }
+    close(fds[1]);
+    children.push_back(pid);
+    tallies.push_back(fds[0]);
+  }
+  int worst = kExitClean;
+  std::string violation;
+  long long cases = 0;
+  double seconds = 0;
+  for (size_t done = 0; done < children.size(); ++done) {
+    int status = 0;
+    const pid_t pid = wait(&status);
+    const auto at = std::find(children.begin(), children.end(), pid) - children.begin();
+    if (at >= static_cast<long>(children.size())) continue;
+    std::string text;
+    char buffer[512];
+    for (ssize_t n; (n = read(tallies[at], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<size_t>(n));
+    close(tallies[at]);
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+      if (line.rfind(kJobTally, 0) == 0) {
+        long long n = 0;
+        double t = 0;
+        std::sscanf(line.c_str(), "cases %lld seconds %lf", &n, &t);
+        cases += n;
+        seconds = std::max(seconds, t);
+      } else if (line.rfind("VIOLATION ", 0) == 0 && violation.empty()) {
+        violation = line;
+      }
+    }
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : kExitInputError;
+    if (code == kExitViolation && worst != kExitInputError) {
+      worst = kExitViolation;
+      for (const pid_t other : children)
+        if (other != pid) kill(other, SIGTERM);
+    } else if (code == kExitInputError) {
+      worst = kExitInputError;
+    } else if (code == kExitInterrupted && worst == kExitClean) {
+      worst = kExitInterrupted;
+    }
+  }
+  std::cerr << "manifuzz check: " << jobs << " jobs, " << cases << " cases in " << seconds << " s ("
+            << static_cast<long long>(cases / std::max(seconds, 1e-9)) << " cases/s)\n";
+  if (!violation.empty()) std::printf("%s\n", violation.c_str());
+  return worst;
+}
+
+}  // namespace
+
 
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--out", "--call-timeout", "--only"}, {"--quiet", "--strict"}, error);
+      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only"},
+      {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--out DIR] [--strict])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
@@ -58,6 +167,17 @@ int check_command(const std::vector<std::string>& words) {
   }
   if (args->has("--quiet")) options.progress_every = 0;
   if (args->has("--strict")) options.selection.level = props::Level::strict;
+  const long long cores = std::max(1u, std::thread::hardware_concurrency());
+  const auto jobs = parse_count(args->get("--jobs", "1"), 1, 4 * cores);
+  if (!jobs) return usage("--jobs takes a whole number from 1 to " + std::to_string(4 * cores));
+  if (*jobs > 1) {
+    // The out folder and the generator are tried once, before any job starts.
+    if (!props::prepare_out_dir(options.out_dir, error) || !open_session(options.generator, options.call_timeout, error)) {
+      std::cerr << "manifuzz check: " << error << "\n";
+      return kExitInputError;
+    }
+    return run_jobs(options, static_cast<int>(*jobs));
+  }
   const auto result = props::run_check(options, std::cerr, error);
   if (!result) {
     std::cerr << "manifuzz check: " << error << "\n";
