@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <utility>
 
 #include "geometry/hull_cache.h"
 #include "geometry/tolerances.h"
@@ -60,6 +61,15 @@ SceneBuild make_scene(const CaseFile& c) {
                   scene.world_extent / scene.scale, tol::kFarthestFrame / tol::world_rounding(1), tol::kFarthestFrame);
     return {std::nullopt, why};
   }
+  for (const auto& [name, hull] : {std::pair{"A", &scene.hull_a}, std::pair{"B", &scene.hull_b}})
+    if (hull->diameter() < tol::kSmallestHullOverRounding * tol::world_rounding(scene.world_extent)) {
+      char why[200];
+      std::snprintf(why, sizeof why,
+                    "hull %s (diameter %.3g) is smaller than %g times the rounding of world coordinates of %.3g: "
+                    "its vertices are not resolved",
+                    name, hull->diameter(), tol::kSmallestHullOverRounding, scene.world_extent);
+      return {std::nullopt, why};
+    }
   return {std::move(scene), {}};
 }
 

@@ -29,6 +29,11 @@ inline constexpr double world_rounding(double magnitude) {
 /// Input limit: a case whose world frame's rounding exceeds this (x L) is
 /// refused (7e7 L from the origin): beyond it the tolerances are rounding.
 inline constexpr double kFarthestFrame = 1e-6;
+/// Input limit: each hull's diameter must be at least this many times the
+/// world frame's rounding. A 5e-4 hull at 1e56 from the origin beside an
+/// 8e70 one has every vertex at the same double: no hull left to check
+/// (manifuzz fuzz on the built-in: a false on-surface of 0.58 L).
+inline constexpr double kSmallestHullOverRounding = 1e3;
 
 /// |depth| or gap below this (x L) is "touching": either colliding answer passes.
 inline constexpr double kTouching = 1e-9;
