@@ -16,14 +16,7 @@ namespace {
 std::vector<CaseFile> random_cases(int points) {
   std::mt19937_64 random(0x1ee7c0de);
   std::vector<CaseFile> cases;
-  for (int k = 0; k < 64; ++k) {
-    CaseFile c;
-    c.points_a = bench::sphere_cloud(points, random);
-    c.points_b = bench::sphere_cloud(points, random);
-    std::uniform_real_distribution<double> u(-1, 1);
-    c.pose_b = {Vec3(u(random), u(random), u(random)), Quat(Eigen::AngleAxisd(3 * u(random), Vec3(1, 2, 3).normalized()))};
-    cases.push_back(c);
-  }
+  for (int k = 0; k < 64; ++k) cases.push_back(bench::random_cloud_pair(points, random));
   return cases;
 }
 

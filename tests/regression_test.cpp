@@ -64,5 +64,33 @@ INSTANTIATE_TEST_SUITE_P(Corpus, RegressionCase, ::testing::ValuesIn(regression_
 
 TEST(RegressionCorpus, HoldsTheFindings) { EXPECT_GE(regression_cases().size(), 4u); }
 
+// corpus/open: findings in the built-in not fixed yet (FINDINGS.md, "Open").
+// Each still fails as its `expect-builtin` line says; when a fix makes one
+// pass, this test fails until the case moves to corpus/regressions with an
+// `expect-tutorial` line.
+std::vector<std::string> open_cases() {
+  std::vector<std::string> files;
+  for (const auto& entry : std::filesystem::directory_iterator(test::corpus_path("open")))
+    if (entry.path().extension() == ".case") files.push_back(entry.path().string());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+TEST(OpenFindings, TheBuiltinStillFailsEachAsRecorded) {
+  ASSERT_FALSE(open_cases().empty());
+  std::string error;
+  const auto builtin = open_session("builtin", 5, error);
+  for (const std::string& file : open_cases()) {
+    const CaseParse parsed = read_case_file(file);
+    ASSERT_TRUE(parsed.value) << parsed.error;
+    std::string expected;
+    for (const std::string& line : parsed.value->extensions)
+      if (line.rfind("expect-builtin ", 0) == 0) expected = line.substr(15);
+    ASSERT_FALSE(expected.empty()) << file << " has no 'expect-builtin' line";
+    const props::CaseOutcome o = props::check_case(*parsed.value, *builtin);
+    EXPECT_EQ(o.finding ? o.finding->name : "pass", expected) << file;
+  }
+}
+
 }  // namespace
 }  // namespace mfz
