@@ -45,6 +45,35 @@ void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
   trace->steps.push_back(std::move(step));
 }
 
+// F27: the other faces of the incident hull that face the reference face and
+// reach below its plane, each clipped as the incident face is; their points
+// are added to `clipped` (each once). True when one was added.
+bool add_faces_below_reference(const PosedHull& incident, const int* done, int done_count,
+                               const ClipFace& reference, const Plane& reference_plane, const ClippingSteps& steps,
+                               double resolution, ClipPolygon& clipped) {
+  bool added = false;
+  ClipPolygon polygon;
+  for (int f = 0; f < incident.face_count(); ++f) {
+    if (std::find(done, done + done_count, f) != done + done_count) continue;
+    if (!(incident.world_face_normal(f).dot(reference.normal) < 0)) continue;
+    bool reaches_below = false;
+    for (int k = 0; k < incident.face_size(f) && !reaches_below; ++k)
+      reaches_below = reference_plane.signed_distance(incident.world_face_point(f, k)) < 0;
+    if (!reaches_below) continue;
+    steps.face_polygon(incident, f, polygon);
+    if (polygon.size() + reference.polygon->size() >= kMaxPolygonVertices) continue;
+    if (!steps.clip_to_sides(reference, polygon, nullptr)) continue;
+    remove_points_outside(polygon, reference_plane);
+    for (int k = 0; k < polygon.size(); ++k) {
+      if (holds_point(clipped, polygon[k], resolution)) continue;
+      // A full buffer keeps only its convex loop's corners, then goes on.
+      if (clipped.size() == kMaxPolygonVertices) order_as_convex_loop(clipped, reference.normal);
+      added = clipped.push(polygon[k]) || added;
+    }
+  }
+  return added;
+}
+
 }  // namespace
 
 void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
@@ -221,6 +250,18 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
       if (holds_point(clipped, polygon[k], resolution)) continue;
       if (!clipped.push(polygon[k])) return 1;
     }
+  }
+  // F27: the incident face is one face around the support vertex; another
+  // face that reaches below the reference plane (a wedge's other side, a
+  // flat edge 5e-8 rad off beside a tilted face) holds part of the contact
+  // region too. Each is clipped the same way and its points join, all of
+  // them: keeping only the corners of their hull would leave a point on an
+  // edge of it to rounding (swap-symmetry, --strict --seed 20261121).
+  // Past the ABI's capacity they are put in loop order for the reduction.
+  if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps, resolution,
+                                clipped)) {
+    if (trace) record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
+    if (clipped.size() > MFZ_MAX_CONTACTS) order_as_convex_loop(clipped, reference.normal);
   }
   reduce_polygon(clipped, MFZ_MAX_CONTACTS);
   steps.emit_contacts(reference, clipped, n, flipped, out);
