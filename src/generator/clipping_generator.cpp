@@ -55,7 +55,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   ClipPolygon polygon;
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
-    if (!(incident.world_face_normal(f).dot(reference.normal) < 0)) continue;
+    if (!(incident.world_face_normal(f).dot(reference.normal) < -tol::kFacingCosine)) continue;
     bool reaches_below = false;
     for (int k = 0; k < incident.face_size(f) && !reaches_below; ++k)
       reaches_below = reference_plane.signed_distance(incident.world_face_point(f, k)) < 0;

@@ -131,6 +131,11 @@ inline constexpr double kParallelEdges = 1e-9;
 /// on-surface's tolerance (F7); a triangulated face's triangles share their
 /// normal exactly. A cosine test cannot say this: 1 - cos underflows.
 inline constexpr double kCoplanarSine = 1e-11;
+/// Generator: another face of the incident hull faces the reference face
+/// (F27) when the cosine of their normals is below minus this. A face
+/// perpendicular to it to rounding adds only points its neighbours give,
+/// and would come and go with the frame (rigid-motion, --strict --seed 102).
+inline constexpr double kFacingCosine = 1e-9;
 /// Generator: an edge-edge axis replaces the best face axis only when its
 /// overlap is smaller by more than this fraction of the hulls' extent along
 /// it, so that a tie (to rounding) keeps the face contact and its polygon.
