@@ -32,13 +32,15 @@ void mutant::after(const mfz_hull&, const mfz_pose&, const mfz_hull&, const mfz_
     return (at(m.contacts[c[1]]) - at(m.contacts[c[0]])).cross(at(m.contacts[i]) - at(m.contacts[c[0]])).norm();
   };
   const auto quad = [](const mfz_manifold& m, const int* c, int, int i) {
-    // The area the fourth point adds: the largest triangle it makes with an edge.
-    double best = 0;
-    for (int e = 0; e < 3; ++e) {
-      const mfz::Vec3 p = at(m.contacts[c[e]]), q = at(m.contacts[c[(e + 1) % 3]]);
-      best = std::max(best, (q - p).cross(at(m.contacts[i]) - p).norm());
-    }
-    return best;
+    // The area of the hull of the three kept points and this one: the
+    // largest of the three quadrilaterals they make (a point inside the
+    // triangle makes none larger than it). Not the largest triangle the
+    // point makes with an edge: that picks a point beside a kept one.
+    const mfz::Vec3 p[4] = {at(m.contacts[c[0]]), at(m.contacts[c[1]]), at(m.contacts[c[2]]), at(m.contacts[i])};
+    const auto area = [&](int a, int b, int d, int e) {
+      return 0.5 * ((p[b] - p[a]).cross(p[d] - p[a]) + (p[d] - p[a]).cross(p[e] - p[a])).norm();
+    };
+    return std::max({area(0, 1, 2, 3), area(0, 1, 3, 2), area(0, 3, 1, 2)});
   };
   double (*rules[4])(const mfz_manifold&, const int*, int, int) = {deepest, farthest, triangle, quad};
   int count = 0;
