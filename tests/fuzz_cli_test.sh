@@ -74,7 +74,18 @@ status=$?
 check test "$status" -le 1
 check grep -q "resuming from" "$scratch/third.log"
 
-# 5. Bad input: one line, exit 2.
+# 5. Ctrl-C: a clean stop, the summary so far, status 130, no fuzzer left.
+"$manifuzz" fuzz --seconds 60 --corpus "$scratch/corpus-int" --out "$scratch/out-int" >/dev/null 2>"$scratch/int.log" &
+fuzzing=$!
+sleep 5
+kill -INT "$fuzzing"
+wait "$fuzzing"
+check test $? -eq 130
+check grep -q "interrupted; the summary so far" "$scratch/int.log"
+sleep 1
+check test -z "$(pgrep -f "corpus-int" || true)"
+
+# 6. Bad input: one line, exit 2.
 for args in "--jobs 0" "--seconds 0" "--seconds x" "--corpus ''" "--frobnicate"; do
   eval "\"$manifuzz\" fuzz $args" >/dev/null 2>"$scratch/err"
   status=$?
