@@ -24,9 +24,9 @@ for target in manifold_fuzzer case_file_fuzzer; do
   mkdir -p "$corpus" && unzip -q "$OUT/${target}_seed_corpus.zip" -d "$corpus"
   max_len=$(sed -n 's/^max_len = //p' "$OUT/$target.options")
   log="$scratch/$target.log"
-  if (cd "$scratch" && "$OUT/$target" -seed=1 -max_total_time=5 -max_len="$max_len" -dict="$OUT/$target.dict" \
+  if (cd "$scratch" && "$OUT/$target" -seed=1 -max_total_time=4 -max_len="$max_len" -dict="$OUT/$target.dict" \
         -artifact_prefix="$scratch/" "$corpus" > "$log" 2>&1); then
-    echo "ok: $target ran 5 s ($(ls "$corpus" | wc -l) inputs in its corpus)"
+    echo "ok: $target ran 4 s ($(ls "$corpus" | wc -l) inputs in its corpus)"
   elif grep -q '^VIOLATION ' "$log" && ! grep -q 'Sanitizer' "$log"; then
     echo "ok: $target ran and stopped on a finding: $(grep '^VIOLATION ' "$log" | head -1)"
   else

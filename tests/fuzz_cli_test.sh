@@ -15,8 +15,8 @@ fail() { failures=$((failures + 1)); printf 'FAILED: %s\n' "$*"; }
 check() { checks=$((checks + 1)); "$@" || fail "$*"; }
 
 # 1. A broken generator (normals the wrong way) is found and minimised.
-out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 20 --jobs 2 \
-        --corpus "$scratch/corpus-sign" --out "$scratch/found" --minimise-seconds 5 2>"$scratch/fuzz.log")
+out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 12 --jobs 2 \
+        --corpus "$scratch/corpus-sign" --out "$scratch/found" --minimise-seconds 3 2>"$scratch/fuzz.log")
 status=$?
 check test "$status" -eq 1
 finding=$(sed -n 's/^VIOLATION [^ ]* //p' <<<"$out" | head -1)
@@ -60,7 +60,7 @@ check grep -q "resuming from $grown inputs" "$scratch/second.log"
 # by its SHA-1, or a seed), and the next campaign starts from it.
 "$manifuzz" fuzz --seconds 60 --jobs 2 --corpus "$scratch/corpus" --out "$scratch/out" >/dev/null 2>&1 &
 victim=$!
-sleep 8
+sleep 6
 kill -9 "$victim"
 wait "$victim" 2>/dev/null
 sleep 1

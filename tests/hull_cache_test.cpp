@@ -29,6 +29,15 @@ TEST(HullCache, TellsPointSetsApartBitForBit) {
   EXPECT_EQ(cache.misses(), 3);
 }
 
+// case_file_fuzzer under UBSan: two empty point sets were compared with
+// memcmp on null pointers.
+TEST(HullCache, AnEmptyPointSetIsAnErrorAndComparesSafely) {
+  HullCache cache(4);
+  EXPECT_FALSE(cache.build({}).hull);
+  EXPECT_FALSE(cache.build({}).hull);
+  EXPECT_EQ(cache.hits(), 1);
+}
+
 TEST(HullCache, HoldsNoMoreThanItsCapacity) {
   HullCache cache(3);
   for (int k = 1; k <= 10; ++k) cache.build(test::box_points(k, 1, 1));

@@ -15,8 +15,11 @@ size_t key_of(const std::vector<Vec3>& points) {
 
 // Bitwise, not ==: -0.0 and 0.0 give the same hull but a NaN never equals
 // itself, and a cache must not tell them apart differently from the hash.
+// An empty vector's data() may be null, which memcmp must not be given
+// (case_file_fuzzer under UBSan, a case file with no points).
 bool same_points(const std::vector<Vec3>& x, const std::vector<Vec3>& y) {
-  return x.size() == y.size() && std::memcmp(x.data(), y.data(), x.size() * sizeof(Vec3)) == 0;
+  if (x.size() != y.size()) return false;
+  return x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(Vec3)) == 0;
 }
 
 }  // namespace
