@@ -39,35 +39,6 @@ void remove_points_outside(ClipPolygon& polygon, const Plane& plane) {
 }
 
 
-// Andrew's monotone chain on the points' coordinates in a basis of the plane.
-void order_as_convex_loop(ClipPolygon& points, const Vec3& normal) {
-  const int n = points.size();
-  if (n < 3) return;
-  const Vec3 u = normal.unitOrthogonal(), v = normal.cross(u);
-  std::array<int, kMaxPolygonVertices> order;
-  for (int k = 0; k < n; ++k) order[k] = k;
-  const auto x = [&](int k) { return u.dot(points[k]); };
-  const auto y = [&](int k) { return v.dot(points[k]); };
-  std::sort(order.begin(), order.begin() + n, [&](int i, int j) { return x(i) < x(j) || (x(i) == x(j) && y(i) < y(j)); });
-  const auto turn = [&](int o, int a, int b) {
-    return (x(a) - x(o)) * (y(b) - y(o)) - (y(a) - y(o)) * (x(b) - x(o));
-  };
-  std::array<int, 2 * kMaxPolygonVertices> hull;
-  int h = 0;
-  for (int pass = 0; pass < 2; ++pass) {
-    const int start = h;
-    for (int i = 0; i < n; ++i) {
-      const int k = pass == 0 ? order[i] : order[n - 1 - i];
-      while (h >= start + 2 && turn(hull[h - 2], hull[h - 1], k) <= 0) --h;
-      hull[h++] = k;
-    }
-    --h;  // the last point starts the other chain
-  }
-  ClipPolygon loop;
-  for (int i = 0; i < h; ++i) loop.push(points[hull[i]]);
-  points.take(loop);
-}
-
 void reduce_polygon(ClipPolygon& polygon, int capacity) {
   while (polygon.size() > capacity) {
     const int n = polygon.size();

@@ -60,11 +60,6 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
 /// crossing points (it wants contact points, not the clipped polygon).
 void remove_points_outside(ClipPolygon& polygon, const Plane& plane);
 
-/// Puts `points` in loop order around `normal`: the corners of their convex
-/// hull seen along it, counter-clockwise; points inside it, or on it
-/// between two corners, are dropped.
-void order_as_convex_loop(ClipPolygon& points, const Vec3& normal);
-
 /// Removes, one at a time, the point whose triangle with its two neighbours
 /// has the least area, until at most `capacity` are left: the polygon's shape,
 /// and so the support it gives a solver, changes least.

@@ -66,8 +66,6 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     remove_points_outside(polygon, reference_plane);
     for (int k = 0; k < polygon.size(); ++k) {
       if (holds_point(clipped, polygon[k], resolution)) continue;
-      // A full buffer keeps only its convex loop's corners, then goes on.
-      if (clipped.size() == kMaxPolygonVertices) order_as_convex_loop(clipped, reference.normal);
       added = clipped.push(polygon[k]) || added;
     }
   }
@@ -257,11 +255,15 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // region too. Each is clipped the same way and its points join, all of
   // them: keeping only the corners of their hull would leave a point on an
   // edge of it to rounding (swap-symmetry, --strict --seed 20261121).
-  // Past the ABI's capacity they are put in loop order for the reduction.
+  const int from_incident_faces = clipped.size();
   if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps, resolution,
                                 clipped)) {
     if (trace) record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
-    if (clipped.size() > MFZ_MAX_CONTACTS) order_as_convex_loop(clipped, reference.normal);
+    // More than the ABI holds: the incident faces' own points, as before
+    // F27, rather than a reduction of points in no loop order (a 59-point
+    // hull's 67 points reduced to none: has-contacts, the second campaign).
+    if (clipped.size() > MFZ_MAX_CONTACTS)
+      while (clipped.size() > from_incident_faces) clipped.erase(clipped.size() - 1);
   }
   reduce_polygon(clipped, MFZ_MAX_CONTACTS);
   steps.emit_contacts(reference, clipped, n, flipped, out);
