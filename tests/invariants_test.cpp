@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 
+#include "geometry/tolerances.h"
 #include "test_support.h"
 
 namespace mfz {
@@ -96,6 +98,13 @@ TEST_F(InvariantFires, OnSurfaceOnAContactSunkIntoBothHulls) {
   expect_fires("on-surface", m);
 }
 
+// The box and slab have right-angled corners only: a point 3e-9 L off is off.
+TEST_F(InvariantFires, OnSurfaceOnAContactJustPastThePointTolerance) {
+  mfz_manifold m = good();
+  shift_contact(m, 0, Vec3(0, 0, 3e-9 * run_.scene.scale));
+  expect_fires("on-surface", m);
+}
+
 TEST_F(InvariantFires, WithinBothHullsOnAContactOutsideItsOwnHull) {
   mfz_manifold m = good();
   shift_contact(m, 3, Vec3(-0.3, 0, 0));  // beyond B's side by 0.3
@@ -175,6 +184,36 @@ TEST(InvariantVerdict, EveryContractInvariantIsChecked) {
                                                         {Vec3(0, 0, 1.5), Quat::Identity()}));
   ASSERT_EQ(run.verdict.checks.size(), invariant_names().size());
   for (size_t k = 0; k < invariant_names().size(); ++k) EXPECT_EQ(run.verdict.checks[k].name, invariant_names()[k]);
+}
+
+// A needle 1e-6 wide and 22 long has face corners of sine 6.4e-8, whose tips
+// doubles resolve only to the world's rounding over that sine; a cube's point
+// tolerance is the contract's kPoint L and rounding.
+TEST(InvariantTolerance, APointIsPlacedAsWellAsTheSharpestFaceCornerIsResolved) {
+  const std::vector<Vec3> needle = {Vec3(0, 0, 0), Vec3(1e-6, 22, 0), Vec3(-1e-6, 22, 0), Vec3(0, 22, 1e-6)};
+  const CaseRun needles = test::run_builtin(test::make_case(needle, {Vec3(0, 0.5, 0), Quat::Identity()},
+                                                            box_points(1, 1, 1), {Vec3(0, -0.9, 0), Quat::Identity()}));
+  const Scene& s = needles.scene;
+  EXPECT_NEAR(s.sharpest_corner, std::sqrt(2.0) * 1e-6 / 22, 1e-9);
+  EXPECT_DOUBLE_EQ(s.point_tolerance(),
+                   s.length_tolerance(tol::kPoint) + tol::world_rounding(s.world_extent) / s.sharpest_corner);
+  EXPECT_GT(s.point_tolerance(), 10 * s.length_tolerance(tol::kPoint));
+
+  const CaseRun cubes = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
+                                                          {Vec3(0, 0, 1.9), Quat::Identity()}));
+  EXPECT_DOUBLE_EQ(cubes.scene.sharpest_corner, 1);
+  EXPECT_DOUBLE_EQ(cubes.scene.point_tolerance(),
+                   cubes.scene.length_tolerance(tol::kPoint) + tol::world_rounding(cubes.scene.world_extent));
+}
+
+// Far from the origin the corner term grows with the coordinates, but never
+// past kSharpCornerCap L.
+TEST(InvariantTolerance, TheSharpCornerTermIsCapped) {
+  const std::vector<Vec3> needle = {Vec3(0, 0, 0), Vec3(1e-8, 1, 0), Vec3(-1e-8, 1, 0), Vec3(0, 1, 1e-8)};
+  const CaseRun far = test::run_builtin(test::make_case(needle, {Vec3(3e5, 0.5, 0), Quat::Identity()},
+                                                        box_points(0.5, 0.5, 0.5), {Vec3(3e5, -0.45, 0), Quat::Identity()}));
+  const Scene& s = far.scene;
+  EXPECT_DOUBLE_EQ(s.point_tolerance(), s.length_tolerance(tol::kPoint) + tol::kSharpCornerCap * s.scale);
 }
 
 TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {

@@ -17,10 +17,15 @@ struct Scene {
   double scale = 1;     ///< L: the larger hull diameter
   double world_extent = 0;  ///< M: the largest absolute world coordinate of a vertex
   double shortest_edge = 0;  ///< of either hull: directions taken from edges resolve to eps M / this
+  double sharpest_corner = 1;  ///< sine of the smallest angle at a face corner of either hull
   std::vector<Vec3> world_a, world_b;  ///< posed vertices
 
   /// A length tolerance: k * L plus the world frame's resolution (tolerances.h).
   double length_tolerance(double k) const;
+  /// The tolerance of a contact point's place: kPoint L, the world frame's
+  /// resolution, and that resolution magnified at the sharpest face corner
+  /// (tolerances.h, kSharpCornerCap).
+  double point_tolerance() const;
   mfz_pose abi_pose_a() const { return pose_a.to_abi(); }
   mfz_pose abi_pose_b() const { return pose_b.to_abi(); }
 };

@@ -41,6 +41,17 @@ inline constexpr double kTouching = 1e-9;
 inline constexpr double kTie = 1e-9;
 /// on-surface, pair-consistency, within-both-hulls (x L).
 inline constexpr double kPoint = 1e-9;
+/// Refinement of the contract, and why: a face corner of angle t is the
+/// crossing of two side planes t apart, which the world frame resolves only to
+/// world_rounding(M) / sin t along the corner's bisector; a point clipped near
+/// it is no better placed, in any generator computing in double. on-surface
+/// and within-both-hulls add that much for the sharpest face corner of either
+/// hull, never more than this (x L). Ordinary hulls (sin t above 1e-3) gain
+/// less than 1e-10 L; needles 1e-3 wide and 1.4e4 long gain 1e-7 L. (The
+/// second campaign: a point clipped at the tip of such a needle's face,
+/// 1.08e-9 L off, at sin t = 1.5e-8; an edge-face contact 9.9e-8 L past the
+/// apex of a face at sin t = 9e-9.)
+inline constexpr double kSharpCornerCap = 1e-6;
 /// depth-exact, normal-realises-depth, negative-penetration, has-contacts (x L).
 inline constexpr double kDepth = 1e-9;
 /// unit-normal: | |n| - 1 | (dimensionless).

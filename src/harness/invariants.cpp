@@ -116,27 +116,26 @@ InvariantCheck check_negative_penetration(const Context& c) {
 }
 
 // The point checks: each contact's error (a length), the worst against
-// tol::kPoint, naming the contact that gave it.
+// `tol`, naming the contact that gave it.
 template <class ErrorOf>
-InvariantCheck worst_contact(const Context& c, const char* what, ErrorOf&& error_of) {
+InvariantCheck worst_contact(const Context& c, double tol, const char* what, ErrorOf&& error_of) {
   if (c.m.contact_count == 0) return skipped("no contacts");
   double worst = 0;
   int at = -1;
   for (int i = 0; i < c.m.contact_count; ++i)
     if (const double err = error_of(i); err > worst || std::isnan(err)) worst = err, at = i;
-  const double tol = c.scene.length_tolerance(tol::kPoint);
   return measured(c.relative(worst), c.relative(tol), describe(what, at));
 }
 
 InvariantCheck check_pair_consistency(const Context& c) {
-  return worst_contact(c, "|b - (a + p_i n)|", [&](int i) {
+  return worst_contact(c, c.scene.length_tolerance(tol::kPoint), "|b - (a + p_i n)|", [&](int i) {
     return (c.on_b(i) - (c.on_a(i) + c.m.contacts[i].penetration * c.n)).norm();
   });
 }
 
 InvariantCheck check_on_surface(const Context& c) {
   const Scene& s = c.scene;
-  return worst_contact(c, "distance to own surface", [&](int i) {
+  return worst_contact(c, s.point_tolerance(), "distance to own surface", [&](int i) {
     return std::max(std::abs(signed_distance(s.hull_a, s.pose_a, c.on_a(i))),
                     std::abs(signed_distance(s.hull_b, s.pose_b, c.on_b(i))));
   });
@@ -146,7 +145,7 @@ InvariantCheck check_on_surface(const Context& c) {
 // tolerance serves both the own-hull and the other-hull bound.
 InvariantCheck check_within_both_hulls(const Context& c) {
   const Scene& s = c.scene;
-  return worst_contact(c, "outside allowed by", [&](int i) {
+  return worst_contact(c, s.point_tolerance(), "outside allowed by", [&](int i) {
     const double slack = std::abs(c.m.contacts[i].penetration);
     return std::max({signed_distance(s.hull_a, s.pose_a, c.on_a(i)), signed_distance(s.hull_b, s.pose_b, c.on_b(i)),
                      signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
