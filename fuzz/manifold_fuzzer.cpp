@@ -5,7 +5,8 @@
 //
 // The generator is the built-in, or the plugin named by MANIFUZZ_GENERATOR
 // (run in its worker with the call limit MANIFUZZ_CALL_TIMEOUT, seconds);
-// MANIFUZZ_LEVEL=strict asks for one canonical answer in ties.
+// MANIFUZZ_LEVEL=strict asks for one canonical answer in ties;
+// MANIFUZZ_PROFILE=... replaces keys of the generator's declared profile.
 #include <cfenv>
 #include <cstdio>
 #include <cstdlib>
@@ -28,6 +29,7 @@ class TrappingSession : public GeneratorSession {
  public:
   explicit TrappingSession(std::unique_ptr<GeneratorSession> inner) : inner_(std::move(inner)) {}
   const std::string& name() const override { return inner_->name(); }
+  const std::string& declared_profile() const override { return inner_->declared_profile(); }
   CallOutcome generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,
                        mfz_manifold& out, int32_t& status, std::string& failure) override {
     std::feclearexcept(FE_ALL_EXCEPT);
@@ -74,7 +76,7 @@ std::string case_path_for(const uint8_t* data, size_t size) {
   c.file.extensions.push_back("note found by: manifold_fuzzer --generator " + t.generator_spec + " (input crash-" +
                               props::input_name(data, size) + ")");
   c.file.extensions.push_back("note violation: " + f.name + ": " + f.detail);
-  for (const std::string& line : props::replay_lines(f, t.selection.level)) c.file.extensions.push_back(line);
+  for (const std::string& line : props::replay_lines(f, t.selection)) c.file.extensions.push_back(line);
   std::string error;
   if (!write_case_file(path, c.file, error)) std::fprintf(stderr, "manifold_fuzzer: %s\n", error.c_str());
   std::fprintf(stderr, "VIOLATION %s %s\n%s: %s\n", f.name.c_str(), path.c_str(), f.name.c_str(), f.detail.c_str());
@@ -108,6 +110,17 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
     std::exit(2);
   }
   if (t.generator_spec == "builtin") t.generator = std::make_unique<TrappingSession>(std::move(t.generator));
+  // The generator's declared profile applies, with MANIFUZZ_PROFILE's keys
+  // replacing its own (manifuzz fuzz passes the profile in force whole).
+  std::optional<std::string> override_text;
+  if (const char* text = std::getenv("MANIFUZZ_PROFILE"); text && *text) override_text = text;
+  const std::optional<Profile> profile = profile_in_force(t.generator->declared_profile(), override_text, error);
+  if (!profile) {
+    std::fprintf(stderr, "manifold_fuzzer: %s\n", error.c_str());
+    std::exit(2);
+  }
+  t.selection.profile = *profile;
+  t.selection.profile_from_command_line = true;
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "geometry/tolerances.h"
 #include "relations.h"
 
 namespace mfz::props {
@@ -23,6 +24,19 @@ CaseTags tags_of(const Scene& s, const OracleAnswers& o, const mfz_manifold& m) 
   return tags;
 }
 
+// The case's `profile` line, read whole (it replaces the selection's); the
+// selection's own when the line is absent or --profile gave one.
+std::optional<Profile> profile_of(const CaseFile& c, const Selection& selection, std::string& error) {
+  if (selection.profile_from_command_line) return selection.profile;
+  for (const std::string& line : c.extensions)
+    if (line.rfind("profile ", 0) == 0) {
+      auto p = parse_profile(line.substr(8), error);
+      if (!p) error = "profile line: " + error.substr(error.find(' ') + 1);
+      return p;
+    }
+  return selection.profile;
+}
+
 Level level_of(const CaseFile& c, Level asked) {
   for (const std::string& line : c.extensions)
     if (line == "level strict") return Level::strict;
@@ -31,10 +45,11 @@ Level level_of(const CaseFile& c, Level asked) {
 
 }  // namespace
 
-std::vector<std::string> replay_lines(const Finding& f, Level level) {
+std::vector<std::string> replay_lines(const Finding& f, const Selection& selection) {
   std::vector<std::string> lines;
   if (!f.relation_line.empty()) lines.push_back(f.relation_line);
-  if (level == Level::strict) lines.push_back("level strict");
+  if (selection.level == Level::strict) lines.push_back("level strict");
+  if (!selection.profile.empty()) lines.push_back("profile " + selection.profile.text());
   return lines;
 }
 
@@ -42,13 +57,28 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
   CaseOutcome outcome;
   std::string relation_error;
   const std::optional<RelationCall> named = relation_in(c, relation_error);
+  std::string profile_error;
+  const std::optional<Profile> profile = profile_of(c, selection, profile_error);
+  if (!profile && relation_error.empty()) relation_error = profile_error;
   SceneBuild built = make_scene(c);
+  if (profile) outcome.profile = *profile;
   if (!built.scene || !relation_error.empty()) {
     outcome.invalid = true;
     outcome.invalid_reason = built.scene ? relation_error : built.error;
     return outcome;
   }
-  const Scene& scene = *built.scene;
+  Scene& scene = *built.scene;
+  scene.precision_epsilon = profile->precision_epsilon;
+  if (scene.precision_rounding() > tol::kProfileFarthestFrame * scene.scale) {
+    outcome.invalid = true;
+    char why[200];
+    std::snprintf(why, sizeof why,
+                  "the case lies %.3g L from the origin, where the profile's precision resolves only %.3g L (past %g L)",
+                  scene.world_extent / scene.scale, scene.precision_rounding() / scene.scale,
+                  tol::kProfileFarthestFrame);
+    outcome.invalid_reason = why;
+    return outcome;
+  }
   outcome.scale = scene.scale;
   const mfz_hull a = scene.hull_a.view(), b = scene.hull_b.view();
   const mfz_pose pa = scene.abi_pose_a(), pb = scene.abi_pose_b();
@@ -65,7 +95,7 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     return outcome;
   }
   const OracleAnswers oracles = consult_oracles(scene);
-  const Verdict verdict = check_manifold(scene, oracles, status, manifold);
+  const Verdict verdict = check_manifold(scene, oracles, status, manifold, *profile);
   outcome.manifold = manifold;
   outcome.verdict = verdict;
   outcome.tags = tags_of(scene, oracles, manifold);
@@ -82,7 +112,7 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     }
   // Relations only make sense on a manifold that is itself right.
   if (verdict.first_violation()) return outcome;
-  const RelationInput input{c, scene, manifold, oracles, level_of(c, selection.level)};
+  const RelationInput input{c, scene, manifold, oracles, level_of(c, selection.level), *profile};
   for (const std::string& name : relation_names()) {
     if (named ? name != named->name : !selection.wants(name)) continue;
     if (auto finding = check_relation(name, input, generator, named ? &named->numbers : nullptr)) {

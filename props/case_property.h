@@ -57,12 +57,19 @@ struct CaseOutcome {
   std::optional<mfz_manifold> manifold;
   std::optional<Verdict> verdict;
   double scale = 0;  ///< L
+  Profile profile;   ///< the profile in force (the selection's, or the case file's line)
 };
 
 /// Which checks count (empty: all invariants and relations), and how strictly.
 struct Selection {
   std::set<std::string> names;
   Level level = Level::contract;
+  /// What the generator declares (or --profile says): every check relaxes
+  /// what it names, and only that.
+  Profile profile = {};
+  /// The profile came from --profile: a case file's `profile` line does not
+  /// replace it.
+  bool profile_from_command_line = false;
   bool wants(const std::string& name) const { return names.empty() || names.count(name) > 0; }
 };
 
@@ -70,11 +77,14 @@ struct Selection {
 const std::vector<std::string>& relation_names();
 
 /// The one pipeline. A case file's `level strict` line raises the level; its
-/// `relation` line restricts the relations to that one, with its parameters.
+/// `relation` line restricts the relations to that one, with its parameters;
+/// its `profile` line (the profile a finding was made under) replaces the
+/// selection's, unless that came from --profile.
 CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Selection& selection = {});
 
 /// The extension lines that make a finding replay: the relation line, and
-/// `level strict` when the finding was made at the strict level.
-std::vector<std::string> replay_lines(const Finding& f, Level level);
+/// `level strict` when the finding was made at the strict level, and the
+/// `profile` line of the profile in force, if any.
+std::vector<std::string> replay_lines(const Finding& f, const Selection& selection);
 
 }  // namespace mfz::props

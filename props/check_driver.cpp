@@ -1,5 +1,7 @@
 #include "check_driver.h"
 
+#include "geometry/tolerances.h"
+
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -119,27 +121,38 @@ std::string write_case(const CheckOptions& options, const GeneratedCase& g, cons
                        std::string& text, std::string& error) {
   const std::string found_by = "found by: manifuzz check --generator " + options.generator + " --seed " +
                                std::to_string(options.seed) +
-                               (options.selection.level == Level::strict ? " --strict" : "") + " (case " +
+                               (options.selection.level == Level::strict ? " --strict" : "") +
+                               (options.profile_override ? " --profile '" + *options.profile_override + "'" : "") + " (case " +
                                std::to_string(index) + ", then shrunk)";
-  return write_finding(options.out_dir, g.file, f, options.selection.level, {found_by}, text, error);
+  return write_finding(options.out_dir, g.file, f, options.selection, {found_by}, text, error);
 }
 
 }  // namespace
 
-std::optional<CheckResult> run_check(const CheckOptions& options, std::ostream& log, std::string& error) {
+std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& log, std::string& error) {
+  CheckOptions options = given;
   std::signal(SIGXFSZ, SIG_IGN);  // a file-size limit is a write error to report, not a death
   // A finding must never be lost to an unwritable folder after minutes of
   // shrinking: the folder is tried first.
   if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
   auto generator = open_session(options.generator, options.call_timeout, error);
   if (!generator) return std::nullopt;
+  const auto profile = profile_in_force(generator->declared_profile(), options.profile_override, error);
+  if (!profile) return std::nullopt;
+  options.selection.profile = *profile;
+  options.selection.profile_from_command_line = true;
   // Ctrl-C and SIGTERM stop the run, which writes what it has and prints
   // its summary.
   catch_interruptions();
   log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << ", "
       << (options.selection.level == Level::strict ? "strict" : "contract") << " level (replay with --seed "
-      << options.seed << ")\n";
-  const auto gen = any_case();
+      << options.seed << "), profile " << profile->text() << "\n";
+  // A profile's precision resolves cases only so far out (tolerances.h):
+  // farther frames are not drawn.
+  const double farthest = options.selection.profile.precision_epsilon > 0
+                              ? tol::kProfileFarthestFrame / (tol::kWorldUlps * options.selection.profile.precision_epsilon)
+                              : std::numeric_limits<double>::infinity();
+  const auto gen = any_case(farthest);
   rc::Random random(options.seed);
   Statistics stats;
   CheckResult result;

@@ -21,6 +21,8 @@ struct CheckOptions {
   double call_timeout = 5;           ///< per generator call, seconds (plugins)
   double progress_every = 5;         ///< seconds between progress lines; 0: none
   Selection selection;
+  /// --profile: keys that replace the generator's declared profile.
+  std::optional<std::string> profile_override;
 };
 
 /// What a run found. `finding` is empty when nothing was.

@@ -426,8 +426,8 @@ const std::vector<std::string>& placement_names() {
   return names;
 }
 
-rc::Gen<GeneratedCase> any_case() {
-  return rc::gen::exec([] {
+rc::Gen<GeneratedCase> any_case(double farthest_frame) {
+  return rc::gen::exec([farthest_frame] {
     GeneratedCase out;
     const auto& names = hull_family_names();
     out.hull_a = names[pick(0, static_cast<int>(names.size()) - 1)];
@@ -452,7 +452,9 @@ rc::Gen<GeneratedCase> any_case() {
     Placed a{std::move(*built_a.hull), {}}, b{std::move(*built_b.hull), {}};
     place(out.placement, a, b, out);
     static const char* const frames[] = {"origin", "far-1e3", "far-1e4", "far-1e5", "far-1e6"};
-    const int f = pick(0, 4);
+    int frames_within = 4;  // the far frames lie 1e3 to 1e6 diameters out
+    while (frames_within > 0 && std::pow(10.0, 2 + frames_within) > farthest_frame) --frames_within;
+    const int f = pick(0, frames_within);
     out.frame = frames[f];
     const Vec3 far = f == 0 ? Vec3(Vec3::Zero()) : Vec3(Vec3(1, -0.5, 0.25) * std::pow(10.0, 2 + f) * a.hull.diameter());
     out.file.pose_a = {a.pose.position + far, a.pose.orientation};

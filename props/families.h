@@ -7,6 +7,7 @@
 #include <rapidcheck.h>
 
 #include <ostream>
+#include <limits>
 #include <string>
 
 #include "case/case_file.h"
@@ -38,7 +39,9 @@ const std::vector<std::string>& placement_names();
 /// Points of one hull family (local space, size about 1).
 rc::Gen<std::vector<Vec3>> hull_points(const std::string& family);
 /// A whole case: two hulls, each from any family, placed by any placement.
-rc::Gen<GeneratedCase> any_case();
+/// `farthest_frame`: the far frames drawn lie at most this many diameters
+/// of A from the origin (a float profile resolves only 130 L out).
+rc::Gen<GeneratedCase> any_case(double farthest_frame = std::numeric_limits<double>::infinity());
 
 /// RapidCheck prints a counterexample with this: the case file itself.
 void showValue(const GeneratedCase& c, std::ostream& os);

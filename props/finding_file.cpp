@@ -30,11 +30,11 @@ bool prepare_out_dir(const std::string& dir, std::string& error) {
   return writable;
 }
 
-std::string write_finding(const std::string& dir, CaseFile file, const Finding& finding, Level level,
+std::string write_finding(const std::string& dir, CaseFile file, const Finding& finding, const Selection& selection,
                           const std::vector<std::string>& notes, std::string& text, std::string& error) {
   for (const std::string& note : notes) file.extensions.push_back("note " + note);
   file.extensions.push_back("note violation: " + finding.name + ": " + finding.detail);
-  for (const std::string& line : replay_lines(finding, level)) file.extensions.push_back(line);
+  for (const std::string& line : replay_lines(finding, selection)) file.extensions.push_back(line);
   text = format_case(file);
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);

@@ -18,7 +18,7 @@ bool prepare_out_dir(const std::string& dir, std::string& error);
 /// was found), the violation, and the lines that make it replay (the
 /// relation, the level). Returns the path, and the text written in `text`;
 /// an empty path and a one-line `error` when the write fails.
-std::string write_finding(const std::string& dir, CaseFile file, const Finding& finding, Level level,
+std::string write_finding(const std::string& dir, CaseFile file, const Finding& finding, const Selection& selection,
                           const std::vector<std::string>& notes, std::string& text, std::string& error);
 
 }  // namespace mfz::props

@@ -48,7 +48,7 @@ double since(Clock::time_point start) { return std::chrono::duration<double>(Clo
 
 std::vector<std::string> fuzzer_environment(const FuzzOptions& o) {
   return {"MANIFUZZ_GENERATOR=" + o.generator, "MANIFUZZ_LEVEL=" + std::string(o.level == Level::strict ? "strict" : "contract"),
-          "MANIFUZZ_CALL_TIMEOUT=" + std::to_string(o.call_timeout)};
+          "MANIFUZZ_CALL_TIMEOUT=" + std::to_string(o.call_timeout), "MANIFUZZ_PROFILE=" + o.profile.text()};
 }
 
 // ---- the engine's process ----
@@ -287,7 +287,7 @@ class Campaign {
     // A violation is replayed here (the generator returned on it, so the
     // call is safe in process); a crash or a hang of the built-in is not.
     if (fs::exists(artefact.string() + ".case") || options_.generator != "builtin") {
-      const CaseOutcome o = check_case(decoded->file, generator_, {{}, options_.level});
+      const CaseOutcome o = check_case(decoded->file, generator_, selection());
       if (o.finding) {
         finding = o.finding;
         found.name = o.finding->name;
@@ -306,7 +306,7 @@ class Campaign {
     if (finding && time_left() > 1) {
       smallest = engine_minimised(artefact, *finding, std::min(kEngineMinimiseSeconds, time_left() / 2))
                      .value_or(smallest);
-      const Minimised m = minimise_finding(smallest, *finding, generator_, {{}, options_.level},
+      const Minimised m = minimise_finding(smallest, *finding, generator_, selection(),
                                            std::min(options_.minimise_seconds, time_left()),
                                            [] { return interrupted(); });
       smallest = m.file;
@@ -321,7 +321,7 @@ class Campaign {
         << (options_.level == Level::strict ? " --strict" : "") << " (after " << static_cast<long long>(elapsed)
         << " s, input " << artefact.filename().string() << ", " << minimised << ")";
     std::string text, error;
-    found.case_path = write_finding(options_.out_dir, smallest, *finding, options_.level, {how.str()}, text, error);
+    found.case_path = write_finding(options_.out_dir, smallest, *finding, selection(), {how.str()}, text, error);
     if (found.case_path.empty()) {
       log_ << "manifuzz fuzz: " << error << "\n";
       return;
@@ -356,12 +356,15 @@ class Campaign {
     const std::string bytes = read_bytes(smallest);
     const auto decoded = decode_fuzz_input(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
     if (!decoded) return {};
-    const CaseOutcome o = check_case(decoded->file, generator_, {{}, options_.level});
+    const CaseOutcome o = check_case(decoded->file, generator_, selection());
     if (o.invalid || !o.finding || !same_failure(original, *o.finding)) return {};
     return decoded->file;
   }
 
   const FuzzOptions& options_;
+  // What the fuzzer checks, as the harness checks it again: the level and
+  // the profile in force, from the command line.
+  Selection selection() const { return {{}, options_.level, options_.profile, true}; }
   GeneratorSession& generator_;
   fs::path work_;
   std::ostream& log_;
@@ -413,8 +416,9 @@ void print_summary(std::ostream& log, const FuzzOptions& o, const FuzzResult& r)
 
 }  // namespace
 
-std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log, std::ostream& findings_out,
+std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, std::ostream& findings_out,
                                    std::string& error) {
+  FuzzOptions options = given;
   // 1. Everything that can fail fails before the fuzzer starts.
   if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
   std::error_code ec;
@@ -425,6 +429,9 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log
   }
   auto generator = open_session(options.generator, options.call_timeout, error);
   if (!generator) return std::nullopt;
+  const auto profile = profile_in_force(generator->declared_profile(), options.profile_override, error);
+  if (!profile) return std::nullopt;
+  options.profile = *profile;
   seed_if_empty(options.corpus_dir);
   const fs::path work = make_work_folder(options.out_dir);
 
@@ -440,7 +447,7 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& options, std::ostream& log
   arguments.push_back(options.corpus_dir);
   catch_interruptions();
   log << "manifuzz fuzz: generator " << generator->name() << ", " << options.jobs << " job"
-      << (options.jobs > 1 ? "s" : "") << ", corpus " << options.corpus_dir << ", findings into " << options.out_dir
+      << (options.jobs > 1 ? "s" : "") << ", profile " << options.profile.text() << ", corpus " << options.corpus_dir << ", findings into " << options.out_dir
       << (options.seconds ? "" : "; Ctrl-C stops") << "\n";
   EngineProcess engine(options.fuzzer, arguments, fuzzer_environment(options), (work / "engine.log").string());
   if (!engine.started()) {

@@ -25,6 +25,10 @@ struct FuzzOptions {
   double progress_every = 5;         ///< seconds between progress lines
   double minimise_seconds = 30;      ///< per distinct finding (libFuzzer's, then the case shrinker)
   Level level = Level::contract;
+  /// --profile: keys that replace the generator's declared profile. The
+  /// profile in force goes to the fuzzer whole, as MANIFUZZ_PROFILE.
+  std::optional<std::string> profile_override;
+  Profile profile = {};  ///< the profile in force, set by run_fuzz
 };
 
 /// One distinct finding: a check and the kind of case it failed on.

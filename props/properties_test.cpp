@@ -49,7 +49,7 @@ Level level_under_test() {
 void save_failure(const std::string& name, const GeneratedCase& c, const Finding& f) {
   std::filesystem::create_directories("failures");
   CaseFile file = c.file;
-  for (const std::string& line : replay_lines(f, level_under_test())) file.extensions.push_back(line);
+  for (const std::string& line : replay_lines(f, {{}, level_under_test()})) file.extensions.push_back(line);
   std::string error;
   write_case_file("failures/" + name + ".case", file, error);
 }

@@ -9,6 +9,7 @@
 
 #include "case/case_file.h"
 #include "geometry/closest_point.h"
+#include "geometry/posed_hull.h"
 #include "geometry/tolerances.h"
 
 namespace mfz::props {
@@ -47,8 +48,9 @@ std::optional<Finding> call(GeneratorSession& g, const Posed& p, mfz_manifold& o
 std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& out, const RelationInput& in,
                            const std::string& relation, double depth_factor = 1) {
   if (auto f = call(g, p, out, relation)) return f;
-  const Scene scene = posed_scene(*p.a, p.pose_a, *p.b, p.pose_b);
-  const Verdict v = check_transformed_manifold(scene, in.oracles, depth_factor, out);
+  Scene scene = posed_scene(*p.a, p.pose_a, *p.b, p.pose_b);
+  scene.precision_epsilon = in.profile.precision_epsilon;
+  const Verdict v = check_transformed_manifold(scene, in.oracles, depth_factor, out, in.profile);
   if (const InvariantCheck* bad = v.first_violation()) {
     char margin[96];
     std::snprintf(margin, sizeof margin, " (error %.3g L, tol %.3g L)", bad->error, bad->tolerance);
@@ -115,18 +117,49 @@ bool within_region(const std::vector<Contact>& x, const std::vector<Contact>& y,
 
 struct Tolerances {
   double depth, point, normal;
+  /// How much coarser the transformed run's frame is than the original's:
+  /// its extra rounding (a case moved far out, a float profile's rounding).
+  double coarser = 0;
 };
 
-// Contact sets, region against region both ways (see within_region).
-std::optional<std::string> compare_contacts(const Answer& original, const Answer& other, const Tolerances& tol) {
+// In a frame coarser than the tie tolerance (a float engine's rounding 1e4 L
+// out), another axis within that rounding of the least, pointing another
+// way, ties there: only depth is determined. Every axis is read, since only
+// the front of the ranking is in order.
+bool direction_tie_in_coarser_frame(const RelationInput& in, const Tolerances& tol) {
+  const double tie = in.scene.length_tolerance(tol::kTie);
+  if (!(tol.coarser > tie) || in.oracles.sat_axes.empty()) return false;
+  const RankedAxis& best = in.oracles.sat_axes[0];
+  for (const RankedAxis& axis : in.oracles.sat_axes)
+    if (axis.reverse_overlap - best.overlap <= tie + tol.coarser ||
+        (axis.overlap - best.overlap <= tie + tol.coarser && !coplanar_normals(axis.normal, best.normal)))
+      return true;
+  return false;
+}
+
+// Contact sets, region against region both ways (see within_region). Under
+// the profile's max-contacts k, a run with k contacts may have dropped some:
+// its points must lie in the other run's region, not the other way round,
+// and two such runs may have kept different points.
+std::optional<std::string> compare_contacts(const Answer& original, const Answer& other, const Tolerances& tol,
+                                            int max_contacts) {
   const int n1 = static_cast<int>(original.contacts.size()), n2 = static_cast<int>(other.contacts.size());
   if (n1 > kComparedContacts && n2 > kComparedContacts) return std::nullopt;
   if (n1 > 8 || n2 > 8) return std::nullopt;  // a region of many points is not compared
+  const bool reduced1 = max_contacts > 0 && n1 >= max_contacts, reduced2 = max_contacts > 0 && n2 >= max_contacts;
+  if (reduced1 && reduced2) return std::nullopt;
   std::string why;
-  if (!within_region(original.contacts, other.contacts, tol.point, tol.depth, why) ||
-      !within_region(other.contacts, original.contacts, tol.point, tol.depth, why))
+  if ((!reduced2 && !within_region(original.contacts, other.contacts, tol.point, tol.depth, why)) ||
+      (!reduced1 && !within_region(other.contacts, original.contacts, tol.point, tol.depth, why)))
     return why;
   return std::nullopt;
+}
+
+// Separated in truth but within the profile's margin: a margin engine may
+// report either colliding answer, and its "depth" is the gap.
+bool within_margin(const RelationInput& in) {
+  return in.profile.margin > 0 && !in.oracles.exact.colliding &&
+         -in.oracles.exact.signed_depth <= in.profile.margin * in.scene.scale + in.scene.length_tolerance(tol::kTouching);
 }
 
 // Two candidates along one direction from different features: a single
@@ -149,19 +182,41 @@ std::optional<std::string> single_contact_in_region(const Answer& x, const Answe
 // normal and contacts are compared unless another minimal axis exists.
 std::optional<std::string> compare(const Answer& original, const Answer& other, const RelationInput& in,
                                    const Tolerances& tol) {
-  if (in.oracles.touching) return std::nullopt;  // either answer passes; nothing to compare
-  if (original.colliding != other.colliding)
+  if (in.oracles.touching || within_margin(in)) return std::nullopt;  // either answer passes; nothing to compare
+  // Touching in the transformed frame too: a case moved 1e4 L out is
+  // resolved only to that frame's rounding (a float engine's, with its profile).
+  if (original.colliding != other.colliding) {
+    if (std::abs(in.oracles.exact.signed_depth) <= tol.depth) return std::nullopt;
     return std::string("colliding ") + (original.colliding ? "1" : "0") + " vs " + (other.colliding ? "1" : "0");
+  }
   if (!original.colliding) return std::nullopt;
-  if (!(std::abs(original.depth - other.depth) <= tol.depth))
+  // face-bias: each run may take a face axis up to its fraction deeper than
+  // the exact depth, and two runs may take different ones: only the depth,
+  // within that fraction, is compared then.
+  const double bias = in.profile.face_bias * std::max(0.0, in.oracles.exact.signed_depth);
+  if (!(std::abs(original.depth - other.depth) <= tol.depth + bias))
     return "depth " + std::to_string(original.depth) + " vs " + std::to_string(other.depth);
+  if (bias > 0 && !((original.normal - other.normal).norm() <= tol.normal)) return std::nullopt;
+  if (direction_tie_in_coarser_frame(in, tol)) return std::nullopt;
   const Ties& ties = in.oracles.ties;
   const bool strict = in.level == Level::strict;
   if (strict ? in.oracles.axis_tie : ties.direction) return std::nullopt;
-  if (!((original.normal - other.normal).norm() <= tol.normal)) return std::string("the normals differ");
+  if (const double apart = (original.normal - other.normal).norm(); !(apart <= tol.normal)) {
+    char why[96];
+    std::snprintf(why, sizeof why, "the normals differ by %.3g (tol %.3g)", apart, tol.normal);
+    return std::string(why);
+  }
+  // The finer ties (features, incident faces, supporting edges) are not
+  // classified at a coarser frame's rounding: contacts are not compared there.
+  if (tol.coarser > in.scene.length_tolerance(tol::kTie)) return std::nullopt;
+  // Under a profile's precision the single contact of an edge pair within
+  // its rounding of a face axis lies anywhere along nearly parallel edges
+  // (a float variant answered a face contact with one vertex in one frame
+  // and two points of an edge in another): not compared.
   if (!strict && ties.contacts_open())
-    return ties.feature ? single_contact_in_region(original, other, tol) : std::nullopt;
-  return compare_contacts(original, other, tol);
+    return ties.feature && in.profile.precision_epsilon == 0 ? single_contact_in_region(original, other, tol)
+                                                             : std::nullopt;
+  return compare_contacts(original, other, tol, in.profile.max_contacts);
 }
 
 // ---- the transformed cases ----
@@ -185,8 +240,9 @@ Hull triangulated(const Hull& h) {
 // coordinates, so it turns by the world frame's resolution over the shorter
 // edge: a 1e-4 edge 1e6 from the origin points only to within 1e-4 rad.
 Tolerances tolerances_for(const Scene& s, double extra_extent = 0) {
-  const double ulps = tol::world_rounding(s.world_extent + extra_extent);
-  return {tol::kDepth * s.scale + ulps, tol::kRelationPoint * s.scale + ulps, tol::kRelationNormal + ulps / s.shortest_edge};
+  const double ulps = s.rounding(extra_extent);
+  return {tol::kDepth * s.scale + ulps, tol::kRelationPoint * s.scale + ulps, tol::kRelationNormal + ulps / s.shortest_edge,
+          ulps - s.rounding()};
 }
 
 std::optional<Finding> finding_if(const std::string& relation, const std::optional<std::string>& difference) {
@@ -278,6 +334,9 @@ std::optional<Finding> far_from_origin(const RelationInput& in, GeneratorSession
   const Vec3 shift = 1e4 * in.scene.scale * Vec3(0.6, -0.8, 0.3);
   const Numbers used = given_or(given, {shift.x(), shift.y(), shift.z()});
   const Motion m{Quat::Identity(), Vec3(used[0], used[1], used[2])};
+  // Past what a profile's precision resolves, the generator promises nothing.
+  if (in.scene.precision_rounding(m.shift.cwiseAbs().maxCoeff()) > tol::kProfileFarthestFrame * in.scene.scale)
+    return std::nullopt;
   mfz_manifold out;
   if (auto f = run(g, {&in.scene.hull_a, m.apply(in.scene.pose_a), &in.scene.hull_b, m.apply(in.scene.pose_b)}, out,
                    in, "far-from-origin"))
@@ -342,7 +401,13 @@ std::optional<Finding> move_along_normal(const RelationInput& in, GeneratorSessi
     if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, pb}, out, "move-along-normal"))
       return recorded(f, "move-along-normal", used);
     const bool should_collide = fraction < 1;
-    if ((out.colliding == 1) != should_collide)
+    // margin: a gap within the margin may still be reported as colliding.
+    // face-bias: a face axis deeper than the exact depth leaves the hulls
+    // apart before its own depth.
+    const double moved = fraction * depth, exact = in.oracles.exact.signed_depth;
+    const bool either = should_collide ? in.profile.face_bias > 0 && moved >= exact - tolerances_for(in.scene).depth
+                                       : (moved - depth) <= in.profile.margin * in.scene.scale;
+    if (!either && (out.colliding == 1) != should_collide)
       return recorded(Finding{"move-along-normal", "moving B by " + format_double(fraction) +
                                                        " of the depth along n gives colliding " +
                                                        std::to_string(out.colliding)},

@@ -19,6 +19,9 @@ struct RelationInput {
   const mfz_manifold& manifold;
   const OracleAnswers& oracles;
   Level level = Level::contract;
+  /// The generator's profile: each run is held to the invariants under it,
+  /// and the comparisons accept what it declares (docs/profiles.md).
+  Profile profile = {};
 };
 
 /// A relation named by a case file: `relation NAME numbers...` (the motion,

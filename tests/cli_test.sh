@@ -65,6 +65,23 @@ expect 2 'not a manifuzz generator' -- "$manifuzz" check --generator "$plugin_di
 expect 2 '--cases takes' -- "$manifuzz" check --cases -3
 expect 2 '--only takes an invariant or relation name' -- "$manifuzz" check --only on-surfce --cases 5
 expect 1 'VIOLATION on-surface ' -- "$manifuzz" check --only on-surface --generator "$plugin_dir/libmanifuzz_tutorial.so" --cases 300 --seed 1 --out "$scratch/only" --quiet
+# ---- profiles (docs/profiles.md) ----
+expect_one_line_error 'profile: unknown key' -- "$manifuzz" replay --profile stiffness=3 "$good"
+expect_one_line_error 'declares a profile the harness cannot read' -- "$manifuzz" replay --generator "$plugin_dir/libmfz_test_bad_profile.so" "$good"
+expect 2 'declares a profile the harness cannot read' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_bad_profile.so" --cases 5 --out "$scratch/bp"
+expect 0 'profile precision=float \(in force' -- "$manifuzz" replay --generator "$plugin_dir/libmfz_mutant_float_precision.so" "$good"
+expect 0 '"profile":"precision=float"' -- "$manifuzz" replay --json --generator "$plugin_dir/libmfz_mutant_float_precision.so" "$good"
+expect 0 'profile max-contacts=4' -- "$manifuzz" check --generator "$plugin_dir/libmfz_mutant_reducing.so" --cases 20 --seed 3 --out "$scratch/none"
+expect 1 'VIOLATION ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_mutant_float_precision.so" --profile precision=double --cases 50 --seed 3 --out "$scratch/fd" --quiet
+# A finding made under a profile records it, and replays under it.
+float_out=$("$manifuzz" check --generator "$plugin_dir/libmfz_mutant_float_side_clip_skipped.so" --cases 300 --seed 3 \
+            --out "$scratch/fl" --quiet 2>/dev/null)
+float_file=$(grep -oE '^VIOLATION [a-z-]+ .*' <<<"$float_out" | cut -d' ' -f3-)
+check_that_profile_recorded() { [ -n "$float_file" ] && grep -q '^profile precision=float$' "$float_file"; }
+checks=$((checks + 1))
+check_that_profile_recorded || { failures=$((failures + 1)); printf 'FAILED: a float finding records its profile\n'; }
+expect 1 'profile precision=float' -- "$manifuzz" replay --generator "$plugin_dir/libmfz_mutant_side_clip_skipped.so" "$float_file"
+
 expect_one_line_error 'line 5' -- "$manifuzz" replay "$scratch/short_line.case"
 expect_one_line_error 'fewer than four' -- "$manifuzz" explain "$scratch/three_points.case"
 expect_one_line_error 'cannot load generator' -- "$manifuzz" replay --generator "$scratch/text.so" "$good"

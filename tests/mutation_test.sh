@@ -36,9 +36,30 @@ for m in $mutants; do
     printf '  MISSED  %-22s (status %s in %s cases)\n' "$m" "$status" "$budget"
   fi
 done
+# A float profile must separate rounding from logic: the broken float
+# variant's finding is one the same logic in double makes too.
+float_case=$(grep -oE '^VIOLATION [a-z-]+ .*' <<<"$("$manifuzz" check --generator "$plugins/libmfz_mutant_float_side_clip_skipped.so" \
+             --cases "$budget" --seed "$seed" --out "$scratch/float" --quiet 2>&1)" | head -1)
+float_name=$(cut -d' ' -f2 <<<"$float_case") float_file=$(cut -d' ' -f3- <<<"$float_case")
+in_double=$("$manifuzz" replay --generator "$plugins/libmfz_mutant_side_clip_skipped.so" --profile none "$float_file" 2>&1)
+if [ -n "$float_name" ] && grep -q "^VIOLATION $float_name " <<<"$in_double"; then
+  printf '  float   %s reproduces in double (%s)\n' "$float_name" "side_clip_skipped"
+else
+  failures=$((failures + 1))
+  printf '  FLOAT FINDING NOT IN DOUBLE: %s\n' "${float_case:-none found}"
+fi
+# The profile is what lets the correct float variant pass: held to double, it fails.
+if "$manifuzz" check --generator "$plugins/libmfz_mutant_float_precision.so" --profile precision=double \
+     --cases "$correct_budget" --seed "$seed" --out "$scratch/double" --quiet >/dev/null 2>&1; then
+  failures=$((failures + 1))
+  printf '  PASSES IN DOUBLE: the float variant passed without its profile\n'
+else
+  printf '  flagged float_precision under --profile precision=double, as it must be\n'
+fi
 # Correct generators: the variants that choose differently in ties at the
-# contract level, the built-in and its plugin at the strict level.
-for g in reducing last_incident_face b_reference_on_face_ties reversed_order \
+# contract level (each under the profile it declares), the built-in and its
+# plugin at the strict level.
+for g in reducing last_incident_face b_reference_on_face_ties reversed_order float_precision face_bias \
          "$plugins/libmanifuzz_clipping.so --strict" "builtin --strict"; do
   case "$g" in *.so*|builtin*) ;; *) g="$plugins/libmfz_mutant_$g.so" ;; esac
   out=$("$manifuzz" check --generator $g --cases "$correct_budget" --seed "$seed" --out "$scratch/ok" --quiet 2>&1)
@@ -52,5 +73,5 @@ for g in reducing last_incident_face b_reference_on_face_ties reversed_order \
 done
 median=$(printf '%s\n' "${detections[@]}" | sort -n | awk '{a[NR]=$1} END {print (NR ? a[int((NR+1)/2)] : "-")}')
 echo "mutation score: $caught/$total caught; median cases to detection: $median (seed $seed)"
-echo "$((total + 3 - failures)) passed, $failures failed"
+echo "$((total + 10 - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -56,6 +56,10 @@ typedef const char* (*mfz_generator_name_fn)(void);
 typedef int32_t (*mfz_generate_fn)(const mfz_hull* a, const mfz_pose* pose_a,
                                    const mfz_hull* b, const mfz_pose* pose_b,
                                    mfz_manifold* out);
+/// Optional: what the generator promises, as space-separated key=value pairs
+/// (precision=float max-contacts=4 face-bias=0.05 margin=0.01); the harness
+/// relaxes exactly what each key names. Absent: the contract in full.
+typedef const char* (*mfz_generator_profile_fn)(void);
 
 #ifdef __cplusplus
 }

@@ -11,13 +11,20 @@
 
 namespace mfz {
 
-double Scene::length_tolerance(double k) const {
-  return k * scale + tol::world_rounding(world_extent);
+double Scene::length_tolerance(double k) const { return k * scale + rounding(); }
+
+double Scene::precision_rounding(double extra_extent) const {
+  return tol::kWorldUlps * precision_epsilon * std::max(world_extent + extra_extent, scale);
+}
+
+double Scene::rounding(double extra_extent) const {
+  return tol::world_rounding(world_extent + extra_extent) + precision_rounding(extra_extent);
 }
 
 double Scene::point_tolerance() const {
-  const double at_sharpest_corner = tol::world_rounding(world_extent) / sharpest_corner;
-  return length_tolerance(tol::kPoint) + std::min(at_sharpest_corner, tol::kSharpCornerCap * scale);
+  const double at_sharpest_corner = rounding() / sharpest_corner;
+  const double cap = std::max(tol::kSharpCornerCap * scale, tol::kSharpCornerProfileCap * precision_rounding());
+  return length_tolerance(tol::kPoint) + std::min(at_sharpest_corner, cap);
 }
 
 namespace {
@@ -107,7 +114,7 @@ Quat unit(Quat q) {
 }  // namespace
 
 Scene posed_scene(Hull a, const Pose& pose_a, Hull b, const Pose& pose_b) {
-  Scene scene{std::move(a), std::move(b), pose_a, pose_b, 1, 0, 0, 1, {}, {}};
+  Scene scene{std::move(a), std::move(b), pose_a, pose_b, 1, 0, 0, 1, 0, {}, {}};
   scene.pose_a.orientation = unit(scene.pose_a.orientation);
   scene.pose_b.orientation = unit(scene.pose_b.orientation);
   scene.scale = std::max(scene.hull_a.diameter(), scene.hull_b.diameter());

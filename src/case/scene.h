@@ -18,10 +18,19 @@ struct Scene {
   double world_extent = 0;  ///< M: the largest absolute world coordinate of a vertex
   double shortest_edge = 0;  ///< of either hull: directions taken from edges resolve to eps M / this
   double sharpest_corner = 1;  ///< sine of the smallest angle at a face corner of either hull
+  /// The unit roundoff a generator profile declares (precision=float:
+  /// 2^-23), or 0: the contract's double, already in the world's rounding.
+  double precision_epsilon = 0;
   std::vector<Vec3> world_a, world_b;  ///< posed vertices
 
-  /// A length tolerance: k * L plus the world frame's resolution (tolerances.h).
+  /// A length tolerance: k * L plus the rounding (below).
   double length_tolerance(double k) const;
+  /// The world frame's resolution (tolerances.h) at coordinates up to M +
+  /// `extra_extent`, plus what the profile's precision adds.
+  double rounding(double extra_extent = 0) const;
+  /// What the profile's precision adds to every length tolerance: 64 of its
+  /// ulps of the larger of M and L (a float engine rounds its own frame).
+  double precision_rounding(double extra_extent = 0) const;
   /// The tolerance of a contact point's place: kPoint L, the world frame's
   /// resolution, and that resolution magnified at the sharpest face corner
   /// (tolerances.h, kSharpCornerCap).

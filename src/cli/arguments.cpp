@@ -59,4 +59,18 @@ std::optional<double> parse_seconds(const std::string& text) {
   return v;
 }
 
+std::optional<std::string> profile_override(const Arguments& args) {
+  if (!args.options.count("--profile")) return std::nullopt;
+  return args.get("--profile", "");
+}
+
+bool apply_profile(const Arguments& args, const GeneratorSession& session, props::Selection& selection,
+                   std::string& error) {
+  const auto profile = profile_in_force(session.declared_profile(), profile_override(args), error);
+  if (!profile) return false;
+  selection.profile = *profile;
+  selection.profile_from_command_line = args.options.count("--profile") > 0;
+  return true;
+}
+
 }  // namespace mfz::cli

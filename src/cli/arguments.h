@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "case_property.h"
+
 namespace mfz::cli {
 
 /// Exit statuses of the contract.
@@ -40,6 +42,14 @@ std::optional<double> call_timeout(const Arguments& args, std::string& error);
 /// The shortest per-call limit --call-timeout accepts (seconds): below it a
 /// correct generator's ordinary call (a 64-gon, a loaded machine) reads as a hang.
 inline constexpr double kShortestCallTimeout = 0.05;
+
+/// Sets the selection's profile: the generator's declaration, with the keys
+/// of --profile replacing its own (and then no case file's `profile` line
+/// replaces it). false and a one-line `error` when either cannot be read.
+bool apply_profile(const Arguments& args, const GeneratorSession& session, props::Selection& selection,
+                   std::string& error);
+/// --profile's text, when given.
+std::optional<std::string> profile_override(const Arguments& args);
 
 /// A finite number >= 0, or nullopt.
 std::optional<double> parse_seconds(const std::string& text);

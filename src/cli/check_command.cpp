@@ -125,11 +125,11 @@ int run_jobs(const props::CheckOptions& options, int jobs) {
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only"},
+      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile"},
       {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
@@ -167,6 +167,7 @@ int check_command(const std::vector<std::string>& words) {
   }
   if (args->has("--quiet")) options.progress_every = 0;
   if (args->has("--strict")) options.selection.level = props::Level::strict;
+  options.profile_override = profile_override(*args);
   const long long cores = std::max(1u, std::thread::hardware_concurrency());
   const auto jobs = parse_count(args->get("--jobs", "1"), 1, 4 * cores);
   if (!jobs) return usage("--jobs takes a whole number from 1 to " + std::to_string(4 * cores));

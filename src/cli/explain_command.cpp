@@ -121,10 +121,10 @@ bool named_relation(const CaseFile& c) {
 // built-in's steps re-runs the built-in in process with a trace.
 int explain_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator", "--call-timeout"}, {"--strict"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile"}, {"--strict"}, error);
   if (!args || args->positional.size() != 1) {
     std::cerr << "manifuzz explain: " << (args ? "expected exactly one case file" : error)
-              << " (usage: manifuzz explain [--generator G] [--strict] FILE)\n";
+              << " (usage: manifuzz explain [--generator G] [--strict] [--profile P] FILE)\n";
     return kExitInputError;
   }
   const std::string spec = args->get("--generator", "builtin");
@@ -138,6 +138,10 @@ int explain_command(const std::vector<std::string>& words) {
   const CaseParse parsed = read_case_file(file);
   props::Selection selection;
   if (args->has("--strict")) selection.level = props::Level::strict;
+  if (!apply_profile(*args, *session, selection, error)) {
+    std::cerr << "manifuzz explain: " << error << "\n";
+    return kExitInputError;
+  }
   std::optional<props::CaseOutcome> outcome;
   if (parsed.value) outcome = props::check_case(*parsed.value, *session, selection);
   if (!parsed.value || outcome->invalid) {

@@ -14,7 +14,7 @@ namespace mfz::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: manifuzz fuzz --generator G [--seconds T] [--jobs J] [--corpus DIR] [--out DIR] [--strict]";
+    "usage: manifuzz fuzz --generator G [--seconds T] [--jobs J] [--corpus DIR] [--out DIR] [--strict] [--profile P]";
 
 int fail(const std::string& why) {
   std::cerr << "manifuzz fuzz: " << why << "\n";
@@ -31,7 +31,7 @@ std::string fuzzer_program() {
 int fuzz_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds"},
+      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile"},
       {"--strict", "--quiet"}, error);
   if (!args) return fail(error + " (" + kUsage + ")");
   if (!args->positional.empty()) return fail("unexpected argument " + mfz::quoted(args->positional[0]) + " (" + kUsage + ")");
@@ -58,6 +58,7 @@ int fuzz_command(const std::vector<std::string>& words) {
   options.call_timeout = *timeout;
   if (args->has("--strict")) options.level = props::Level::strict;
   if (args->has("--quiet")) options.progress_every = 0;
+  options.profile_override = profile_override(*args);
   options.fuzzer = fuzzer_program();
   if (options.fuzzer.empty())
     return fail("no manifold_fuzzer beside this manifuzz: fuzzing needs the clang build (cmake --preset clang; "

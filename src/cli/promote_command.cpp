@@ -18,7 +18,7 @@ namespace mfz::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: manifuzz promote FILE [--name NAME] [--dir DIR] [--generator G] [--strict] [--seconds T]";
+    "usage: manifuzz promote FILE [--name NAME] [--dir DIR] [--generator G] [--strict] [--profile P] [--seconds T]";
 /// Regression cases land here unless --dir says otherwise.
 constexpr const char* kDefaultDir = "corpus/regressions";
 /// How long minimising may take, unless --seconds says otherwise.
@@ -71,7 +71,7 @@ int fail(const std::string& why) {
 
 int promote_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--name", "--dir", "--generator", "--seconds", "--call-timeout"},
+  const auto args = parse_arguments(words, {"--name", "--dir", "--generator", "--seconds", "--call-timeout", "--profile"},
                                     {"--strict"}, error);
   if (!args) return fail(error + " (" + kUsage + ")");
   if (args->positional.size() != 1) return fail(std::string("give one finding (") + kUsage + ")");
@@ -91,10 +91,15 @@ int promote_command(const std::vector<std::string>& words) {
   if (!generator) return fail(error);
   props::Selection selection;
   if (args->has("--strict")) selection.level = props::Level::strict;
+  if (!apply_profile(*args, *generator, selection, error)) return fail(error);
 
   // 1. The finding must still fail against its generator.
   const props::CaseOutcome outcome = props::check_case(finding_case, *generator, selection);
   if (outcome.invalid) return fail(file + ": " + outcome.invalid_reason);
+  // The profile the finding failed under (its `profile` line, or the one in
+  // force) goes with it into the regression case.
+  selection.profile = outcome.profile;
+  selection.profile_from_command_line = true;
   if (!outcome.finding)
     return fail(quoted(file, 4096) + " passes against " + generator->name() +
                 ": nothing to promote (--generator names the generator it failed)");
@@ -116,7 +121,7 @@ int promote_command(const std::vector<std::string>& words) {
   promoted.extensions.push_back("note generator it failed: " + generator->name() + " (" + spec + ")");
   for (const std::string& line : finding_case.extensions)
     if (line.rfind("note found by:", 0) == 0) promoted.extensions.push_back(line);
-  for (const std::string& line : props::replay_lines(minimal.finding, selection.level))
+  for (const std::string& line : props::replay_lines(minimal.finding, selection))
     promoted.extensions.push_back(line);
   // What a correct generator answers: every check passes.
   promoted.extensions.push_back("expect pass");

@@ -1,4 +1,4 @@
-// manifuzz replay [--generator G] [--json] [--strict] FILE...
+// manifuzz replay [--generator G] [--json] [--strict] [--profile P] FILE...
 // Each case goes through the one pipeline (props/case_property.h): a plugin
 // runs in its worker, and a relation finding replays its relation with the
 // recorded parameters, so it exits 1 as it did when found.
@@ -28,6 +28,7 @@ const char* word_of(const props::CaseOutcome& o) {
 
 void print_text(const std::string& file, const props::CaseOutcome& o) {
   std::cout << "case " << file << "\n";
+  if (!o.profile.empty()) std::cout << "  profile " << o.profile.text() << " (in force; its share of a tolerance in brackets)\n";
   if (o.manifold) std::cout << manifold_text(*o.manifold);
   if (o.verdict) std::cout << verdict_text(*o.verdict);
   if (o.finding) std::cout << "  FAIL " << o.finding->name << ": " << o.finding->detail << "\n";
@@ -40,6 +41,7 @@ void add_json(Json& json, const std::string& file, const props::CaseOutcome* o, 
     json.key("verdict").value("input-error").key("error").value(error);
   } else {
     json.key("scale").value(o->scale);
+    json.key("profile").value(o->profile.text());
     if (o->manifold) manifold_json(json, *o->manifold);
     if (o->verdict) verdict_json(json, *o->verdict);
     if (o->finding) json.key("finding").begin_object().key("name").value(o->finding->name).key("detail").value(o->finding->detail).end_object();
@@ -52,10 +54,10 @@ void add_json(Json& json, const std::string& file, const props::CaseOutcome* o, 
 
 int replay_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator", "--call-timeout"}, {"--json", "--strict"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile"}, {"--json", "--strict"}, error);
   if (!args || args->positional.empty()) {
     std::cerr << "manifuzz replay: " << (args ? "no case file given" : error)
-              << " (usage: manifuzz replay [--generator G] [--json] [--strict] FILE...)\n";
+              << " (usage: manifuzz replay [--generator G] [--json] [--strict] [--profile P] FILE...)\n";
     return kExitInputError;
   }
   std::unique_ptr<GeneratorSession> session = nullptr;
@@ -67,6 +69,10 @@ int replay_command(const std::vector<std::string>& words) {
   }
   props::Selection selection;
   if (args->has("--strict")) selection.level = props::Level::strict;
+  if (!apply_profile(*args, *session, selection, error)) {
+    std::cerr << "manifuzz replay: " << error << "\n";
+    return kExitInputError;
+  }
   const bool json_output = args->has("--json");
   Json json;
   json.begin_object().key("generator").value(session->name()).key("cases").begin_array();

@@ -35,6 +35,12 @@ inline constexpr double kFarthestFrame = 1e-6;
 /// (manifuzz fuzz on the built-in: a false on-surface of 0.58 L).
 inline constexpr double kSmallestHullOverRounding = 1e3;
 
+/// Under a profile's precision (float), a case whose rounding in that
+/// precision (64 of its ulps of M) exceeds this (x L) is outside what the
+/// generator promises: 130 L from the origin in float. It is discarded as
+/// invalid, and the far-from-origin relation is not run past it.
+inline constexpr double kProfileFarthestFrame = 1e-3;
+
 /// |depth| or gap below this (x L) is "touching": either colliding answer passes.
 inline constexpr double kTouching = 1e-9;
 /// Two SAT axes whose overlaps differ by less than this (x L) tie.
@@ -52,6 +58,11 @@ inline constexpr double kPoint = 1e-9;
 /// 1.08e-9 L off, at sin t = 1.5e-8; an edge-face contact 9.9e-8 L past the
 /// apex of a face at sin t = 9e-9.)
 inline constexpr double kSharpCornerCap = 1e-6;
+/// Under a profile's precision (float) the cap is this many times that
+/// precision's rounding, when larger (7.6e-3 L near the origin in float): a
+/// float variant's point at a corner of sine 0.035 lay 7e-5 L off, within
+/// its rounding over that sine (docs/profiles.md).
+inline constexpr double kSharpCornerProfileCap = 1e3;
 /// depth-exact, normal-realises-depth, negative-penetration, has-contacts (x L).
 inline constexpr double kDepth = 1e-9;
 /// unit-normal: | |n| - 1 | (dimensionless).

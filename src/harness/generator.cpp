@@ -69,6 +69,8 @@ std::optional<Generator> Generator::open(const std::string& spec, std::string& e
   g.generate_ = generate;
   const char* reported = name();
   g.name_ = reported ? reported : spec;
+  if (auto profile = reinterpret_cast<mfz_generator_profile_fn>(symbol("mfz_generator_profile")))
+    if (const char* declared = profile()) g.profile_ = one_line(declared);
   return g;
 }
 

@@ -23,6 +23,8 @@ class Generator {
   static std::optional<Generator> open(const std::string& spec, std::string& error);
 
   const std::string& name() const { return name_; }
+  /// What its optional `mfz_generator_profile()` returned (empty: none).
+  const std::string& declared_profile() const { return profile_; }
   /// Poisons `out`, then calls the generator; returns its status (0 = done,
   /// non-zero = refused).
   int32_t generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,
@@ -32,6 +34,7 @@ class Generator {
   std::shared_ptr<void> library_;  // keeps a plugin loaded while copies live
   mfz_generate_fn generate_ = nullptr;
   std::string name_;
+  std::string profile_;
 };
 
 }  // namespace mfz

@@ -19,6 +19,7 @@ class InProcessSession final : public GeneratorSession {
  public:
   explicit InProcessSession(Generator g) : generator_(std::move(g)) {}
   const std::string& name() const override { return generator_.name(); }
+  const std::string& declared_profile() const override { return generator_.declared_profile(); }
   CallOutcome generate(const mfz_hull& a, const mfz_pose& pa, const mfz_hull& b, const mfz_pose& pb, mfz_manifold& out,
                        int32_t& status, std::string&) override {
     status = generator_.generate(a, pa, b, pb, out);
@@ -102,7 +103,9 @@ bool read_hull(int fd, OwnedHull& h) {
   dup2(STDERR_FILENO, STDOUT_FILENO);
   std::string error;
   const auto generator = Generator::open(spec, error);
-  const std::string hello = generator ? "ok " + generator->name() : "error " + error;
+  // The name, then the declared profile after a NUL (neither holds one).
+  const std::string hello =
+      generator ? "ok " + generator->name() + std::string(1, '\0') + generator->declared_profile() : "error " + error;
   const uint32_t length = static_cast<uint32_t>(hello.size());
   write_all(out, &length, sizeof length);
   write_all(out, hello.data(), hello.size());
@@ -124,6 +127,7 @@ class WorkerSession final : public GeneratorSession {
   ~WorkerSession() override { stop(); }
 
   const std::string& name() const override { return name_; }
+  const std::string& declared_profile() const override { return profile_; }
 
   // Starts the worker; empty on success, else why not.
   std::string start() {
@@ -148,7 +152,9 @@ class WorkerSession final : public GeneratorSession {
       if (!read_all(from_, hello.data(), length)) hello.clear();
     }
     if (hello.rfind("ok ", 0) == 0) {
-      name_ = hello.substr(3);
+      const size_t nul = hello.find('\0');
+      name_ = hello.substr(3, nul == std::string::npos ? std::string::npos : nul - 3);
+      if (nul != std::string::npos) profile_ = hello.substr(nul + 1);
       return {};
     }
     stop();
@@ -220,7 +226,7 @@ class WorkerSession final : public GeneratorSession {
     to_ = from_ = -1;
   }
 
-  std::string spec_, name_;
+  std::string spec_, name_, profile_;
   int timeout_ms_;
   pid_t pid_ = -1;
   int to_ = -1, from_ = -1;

@@ -19,6 +19,9 @@ class GeneratorSession {
  public:
   virtual ~GeneratorSession() = default;
   virtual const std::string& name() const = 0;
+  /// The profile the generator declares (`mfz_generator_profile()`), as text;
+  /// empty when it declares none.
+  virtual const std::string& declared_profile() const = 0;
   /// Poisons `out` and calls the generator. On `done`, `status` is its return
   /// value; on `crashed` or `hung`, `failure` says how (signal, time limit).
   virtual CallOutcome generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,

@@ -40,6 +40,7 @@ struct Context {
   const Scene& scene;
   const OracleAnswers& oracles;
   const mfz_manifold& m;
+  const Profile& profile;
   double L;
   Vec3 n;
   double depth;  // -penetration
@@ -48,7 +49,28 @@ struct Context {
   double relative(double length) const { return length / L; }
   Vec3 on_a(int i) const { return to_vec(m.contacts[i].point_on_a); }
   Vec3 on_b(int i) const { return to_vec(m.contacts[i].point_on_b); }
+  /// The profile's margin as a length (0 without one).
+  double margin() const { return profile.margin * L; }
+  /// Separated in truth, but within the profile's margin: a margin engine
+  /// reports such a case as colliding with a positive penetration.
+  bool within_margin() const {
+    return profile.margin > 0 && !oracles.exact.colliding &&
+           -oracles.exact.signed_depth <= margin() + scene.length_tolerance(tol::kTouching);
+  }
+  /// n is a face axis (of A, or of B reversed), which face-bias lets exceed
+  /// the exact depth by up to its fraction.
+  bool biased_face_axis() const;
+  /// How much deeper than the exact depth face-bias lets a face axis be.
+  double face_bias_allowance() const {
+    return biased_face_axis() ? profile.face_bias * std::max(0.0, oracles.exact.signed_depth) : 0;
+  }
 };
+
+// The profile's share of a check's tolerance, for the report.
+InvariantCheck with_share(InvariantCheck check, double share) {
+  check.profile_share = share;
+  return check;
+}
 
 // The checks leave the name to the table below (kInvariants).
 InvariantCheck measured(double error, double tolerance, std::string detail = {}) {
@@ -78,6 +100,9 @@ InvariantCheck check_finite(const Context& c) {
   if (m.colliding != 0 && m.colliding != 1) return measured(1, 0, "colliding is " + std::to_string(m.colliding));
   if (m.contact_count < 0 || m.contact_count > MFZ_MAX_CONTACTS)
     return measured(1, 0, "contact_count is " + std::to_string(m.contact_count));
+  if (c.profile.max_contacts > 0 && m.contact_count > c.profile.max_contacts)
+    return measured(1, 0, text("contact_count is %d, past the profile's max-contacts=%d", m.contact_count,
+                               c.profile.max_contacts));
   if (m.colliding == 1 && (!to_vec(m.normal).allFinite() || !std::isfinite(m.penetration)))
     return measured(1, 0, "normal or penetration is not finite");
   for (int i = 0; i < m.contact_count; ++i)
@@ -88,21 +113,25 @@ InvariantCheck check_finite(const Context& c) {
 
 InvariantCheck check_unit_normal(const Context& c) {
   if (!c.colliding) return skipped("not colliding");
-  return measured(std::abs(c.n.norm() - 1), tol::kUnitNormal);
+  const double precision = tol::kWorldUlps * c.scene.precision_epsilon;
+  return with_share(measured(std::abs(c.n.norm() - 1), tol::kUnitNormal + precision), precision);
 }
 
 // Touching cases may report p or p_i a rounding error above zero. Elsewhere
 // p_i < 0 is strict: a contact with p_i = 0 fails however small its error.
 InvariantCheck check_negative_penetration(const Context& c) {
   if (!c.colliding) return skipped("not colliding");
-  const double tol = c.scene.length_tolerance(tol::kDepth);
-  const double ceiling = c.oracles.touching ? tol : 0;
+  // margin: a case separated by up to the margin may report its gap as a
+  // positive penetration, and its contacts their distances.
+  const double margin = c.within_margin() ? c.margin() : 0;
+  const double tol = c.scene.length_tolerance(tol::kDepth) + margin;
+  const double ceiling = c.oracles.touching || margin > 0 ? tol : 0;
   double worst = std::max(0.0, c.m.penetration - ceiling);
   bool broken = worst > 0;
   int at = -1;
   for (int i = 0; i < c.m.contact_count; ++i) {
     const double p = c.m.contacts[i].penetration;
-    const bool not_negative = c.oracles.touching ? p > tol : p >= 0;
+    const bool not_negative = c.oracles.touching || margin > 0 ? p > tol : p >= 0;
     const double too_deep = (c.m.penetration - tol) - p;
     if (not_negative || too_deep > 0) {
       broken = true;
@@ -112,7 +141,7 @@ InvariantCheck check_negative_penetration(const Context& c) {
   }
   InvariantCheck check{{}, broken ? CheckStatus::fail : CheckStatus::pass, c.relative(worst),
                        c.relative(tol), describe("p <= 0 and p - tol <= p_i < 0", at)};
-  return check;
+  return with_share(check, c.relative(margin + c.scene.precision_rounding()));
 }
 
 // The point checks: each contact's error (a length), the worst against
@@ -167,6 +196,8 @@ InvariantCheck check_agrees_with_gjk(const Context& c) {
     return {{}, CheckStatus::oracle_disagreement, 0, 0,
             std::string("GJK says ") + (o.ccd.gjk_intersecting ? "intersecting" : "separate") +
                 ", the exact oracle says " + (o.exact.colliding ? "intersecting" : "separate")};
+  if (c.colliding && c.within_margin())
+    return with_share(measured(0, c.relative(c.margin()), "separated within the profile's margin"), c.relative(c.margin()));
   const bool agree = c.colliding == o.ccd.gjk_intersecting;
   return measured(agree ? 0 : c.relative(std::abs(o.exact.signed_depth)),
                   c.relative(c.scene.length_tolerance(tol::kTouching)),
@@ -177,8 +208,11 @@ InvariantCheck check_agrees_with_gjk(const Context& c) {
 InvariantCheck check_depth_exact(const Context& c) {
   if (!c.colliding) return skipped("not colliding");
   const double tol = c.scene.length_tolerance(tol::kDepth);
-  return measured(c.relative(std::abs(c.depth - c.oracles.exact.signed_depth)), c.relative(tol),
-                  text("depth %g, exact %g", c.depth, c.oracles.exact.signed_depth));
+  const double excess = c.depth - c.oracles.exact.signed_depth, bias = c.face_bias_allowance();
+  // face-bias: a face axis may be deeper than the exact depth by its fraction.
+  const double err = excess > 0 ? std::max(0.0, excess - bias) : -excess;
+  return with_share(measured(c.relative(err), c.relative(tol), text("depth %g, exact %g", c.depth, c.oracles.exact.signed_depth)),
+                    c.relative(bias + c.scene.precision_rounding()));
 }
 
 InvariantCheck check_depth_within_epa_bounds(const Context& c) {
@@ -189,9 +223,11 @@ InvariantCheck check_depth_within_epa_bounds(const Context& c) {
     return {{}, CheckStatus::oracle_disagreement, c.relative(o.ccd.epa_depth - o.exact.signed_depth),
             c.relative(tol_epa), "EPA's depth exceeds the exact depth"};
   const double upper = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
-  const double err = std::max({0.0, o.ccd.epa_depth - c.depth, c.depth - upper});
-  return measured(c.relative(err), c.relative(tol_epa),
-                  text("EPA %g <= depth %g <= %g", o.ccd.epa_depth, c.depth, upper));
+  const double bias = c.face_bias_allowance();
+  const double err = std::max({0.0, o.ccd.epa_depth - c.depth, c.depth - upper - bias});
+  return with_share(measured(c.relative(err), c.relative(tol_epa),
+                             text("EPA %g <= depth %g <= %g", o.ccd.epa_depth, c.depth, upper + bias)),
+                    c.relative(bias + c.scene.precision_rounding()));
 }
 
 InvariantCheck check_normal_agrees_with_epa(const Context& c) {
@@ -202,7 +238,7 @@ InvariantCheck check_normal_agrees_with_epa(const Context& c) {
   // At zero depth every direction realises the depth, so EPA's is arbitrary.
   if (o.touching) return skipped("touching: EPA's direction is arbitrary");
   const double angle = std::acos(std::clamp(c.n.normalized().dot(o.ccd.epa_direction), -1.0, 1.0));
-  if (angle <= tol::kEpaAngle) return measured(angle, tol::kEpaAngle, "angle to EPA (rad)");
+  if (angle <= tol::kEpaAngle) return with_share(measured(angle, tol::kEpaAngle, "angle to EPA (rad)"), 0);
   // EPA's direction is only an oracle where it realises the exact depth
   // itself: at small depths its depth can be right and its direction not.
   const double along_epa = directed_overlap(c.scene.world_a, c.scene.world_b, o.ccd.epa_direction);
@@ -213,7 +249,15 @@ InvariantCheck check_normal_agrees_with_epa(const Context& c) {
                  o.exact.signed_depth)};
   }
   // A tie: both axes are minimal, EPA's and n, each realising the depth.
+  // face-bias: n may be a face axis up to its fraction deeper than EPA's.
   const double along_n = directed_overlap(c.scene.world_a, c.scene.world_b, c.n.normalized());
+  const double bias = c.face_bias_allowance();
+  if (bias > 0)
+    return with_share(measured(c.relative(std::max({0.0, along_n - o.exact.signed_depth - bias, std::abs(along_n - c.depth)})),
+                               c.relative(tol_epa),
+                               text("a face axis %g deep, exact %g, within the profile's face-bias", along_n,
+                                    o.exact.signed_depth)),
+                      c.relative(bias + c.scene.precision_rounding()));
   const double err = std::max(std::abs(along_epa - c.depth), std::abs(along_n - c.depth));
   return measured(c.relative(err), c.relative(tol_epa),
                   text("angle to EPA %g rad; overlap along EPA's direction %g, along n %g, depth %g", angle, along_epa,
@@ -233,6 +277,7 @@ InvariantCheck check_normal_realises_depth(const Context& c) {
 InvariantCheck check_separates(const Context& c) {
   const OracleAnswers& o = c.oracles;
   if (!c.colliding) return skipped("not colliding");
+  if (c.within_margin()) return skipped("separated within the profile's margin");
   const double tol = c.scene.length_tolerance(tol::kSeparates);
   const Vec3 n = c.n.normalized();
   const Vec3 beyond = (c.depth + tol) * n;
@@ -240,8 +285,11 @@ InvariantCheck check_separates(const Context& c) {
   const char* what = "still overlapping after moving B by depth + tol";
   bool exact_separates = err == 0;
   bool gjk_disagrees = exact_separates && libccd_intersecting(c.scene, beyond);
-  if (exact_separates && c.depth > 2 * tol) {
-    const Vec3 short_of = (c.depth - tol) * n;
+  // face-bias: a face axis deeper than the exact depth leaves the hulls
+  // apart before its own depth, but never before the exact depth.
+  const double bias = c.face_bias_allowance();
+  if (exact_separates && c.depth - bias > 2 * tol) {
+    const Vec3 short_of = (c.depth - bias - tol) * n;
     err = std::max(0.0, -depth_after_moving_b(o.sat_axes, short_of));
     what = "already separate after moving B by depth - tol";
     gjk_disagrees = err == 0 && !libccd_intersecting(c.scene, short_of);
@@ -249,7 +297,7 @@ InvariantCheck check_separates(const Context& c) {
   if (err == 0 && gjk_disagrees)
     return {{}, CheckStatus::oracle_disagreement, 0, c.relative(tol),
             "the exact test and GJK disagree at depth +- tol"};
-  return measured(c.relative(err), 0.0, err > 0 ? what : "");
+  return with_share(measured(c.relative(err), 0.0, err > 0 ? what : ""), c.relative(bias));
 }
 
 // True when unit `n` is the outward normal of a face of A or the inward
@@ -259,6 +307,19 @@ bool along_a_face_normal(const Scene& s, const Vec3& n) {
     if (coplanar_normals(s.pose_a.rotate(s.hull_a.face_normal(f)), n)) return true;
   for (int f = 0; f < s.hull_b.face_count(); ++f)
     if (coplanar_normals(s.pose_b.rotate(s.hull_b.face_normal(f)), -n)) return true;
+  return false;
+}
+
+// An engine's face axis is the face's normal to its own precision: within
+// 1e-6 rad (tolerances.h, kRelationNormal) and 64 of its ulps.
+bool Context::biased_face_axis() const {
+  if (profile.face_bias <= 0) return false;
+  const double sine = tol::kRelationNormal + tol::kWorldUlps * scene.precision_epsilon;
+  const Vec3 u = n.normalized();
+  for (int f = 0; f < scene.hull_a.face_count(); ++f)
+    if ((scene.pose_a.rotate(scene.hull_a.face_normal(f)) - u).norm() <= sine) return true;
+  for (int f = 0; f < scene.hull_b.face_count(); ++f)
+    if ((scene.pose_b.rotate(scene.hull_b.face_normal(f)) + u).norm() <= sine) return true;
   return false;
 }
 
@@ -351,6 +412,11 @@ Verdict run_rows(const Context& c, int32_t status, Wanted&& wanted) {
     if (!wanted(row)) continue;
     InvariantCheck check = garbage ? skipped("output not finite") : row.check(c);
     check.name = row.name;
+    // Every length tolerance holds the precision's rounding once.
+    if (check.profile_share < 0)
+      check.profile_share = check.tolerance > 0 && check.status != CheckStatus::skipped
+                                ? std::min(check.tolerance, c.relative(c.scene.precision_rounding()))
+                                : 0;
     garbage = garbage || (check.status == CheckStatus::fail && check.name == "finite");
     v.checks.push_back(std::move(check));
   }
@@ -368,20 +434,21 @@ const std::vector<std::string>& invariant_names() {
   return names;
 }
 
-Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& m) {
-  const Context c{scene, oracles, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
+Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& m,
+                       const Profile& profile) {
+  const Context c{scene, oracles, m, profile, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
   return run_rows(c, status, [](const InvariantRow&) { return true; });
 }
 
 Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& original, double depth_factor,
-                                   const mfz_manifold& m) {
+                                   const mfz_manifold& m, const Profile& profile) {
   OracleAnswers known;
   known.exact = original.exact;
   known.exact.signed_depth *= depth_factor;
   known.touching = original.touching;
   known.face_contact = original.face_contact;
   known.ties = original.ties;
-  const Context c{scene, known, m, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
+  const Context c{scene, known, m, profile, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1};
   return run_rows(c, 0, [](const InvariantRow& row) { return row.transformed_runs; });
 }
 

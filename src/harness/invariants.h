@@ -10,6 +10,7 @@
 #include "manifuzz/abi.h"
 #include "oracles/oracle_answers.h"
 #include "case/scene.h"
+#include "harness/profile.h"
 
 namespace mfz {
 
@@ -22,6 +23,10 @@ struct InvariantCheck {
   double error = 0;      ///< measured, in units of L
   double tolerance = 0;  ///< in units of L
   std::string detail;    ///< one line: what was measured, or why skipped
+  /// The part of `tolerance` the generator's profile added (x L; 0 without
+  /// one). A check leaves it negative for the default: the precision's
+  /// rounding, which every length tolerance holds once.
+  double profile_share = -1;
 };
 
 /// The invariant names, in the contract's order.
@@ -37,15 +42,17 @@ struct Verdict {
 };
 
 /// Checks `manifold` (what the generator returned with `status`) against
-/// every invariant. A refusal is reported by `refused()`, and its checks are
+/// every invariant, relaxed as `profile` says (its precision must already be
+/// in `scene`). A refusal is reported by `refused()`, and its checks are
 /// skipped.
-Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& manifold);
+Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& manifold,
+                       const Profile& profile = {});
 
 /// The invariants a relation's transformed run must pass as well: every check
 /// that needs no oracle of its own, against the original case's oracles (a
 /// motion, a renumbering or a swap keeps the exact depth; a scale multiplies
 /// it by `depth_factor`).
 Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& original, double depth_factor,
-                                   const mfz_manifold& m);
+                                   const mfz_manifold& m, const Profile& profile = {});
 
 }  // namespace mfz

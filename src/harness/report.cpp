@@ -47,6 +47,10 @@ std::string verdict_text(const Verdict& v, const std::string& indent) {
       char margin[96];
       std::snprintf(margin, sizeof margin, " error %.3g L  tol %.3g L", c.error, c.tolerance);
       out << margin;
+      if (c.profile_share > 0) {
+        std::snprintf(margin, sizeof margin, " (profile %.3g L)", c.profile_share);
+        out << margin;
+      }
     }
     if (!c.detail.empty()) out << "  " << c.detail;
     out << "\n";
@@ -127,6 +131,7 @@ void verdict_json(Json& j, const Verdict& v) {
     j.key("status").value(status_name(c.status));
     j.key("error").value(c.error);
     j.key("tolerance").value(c.tolerance);
+    j.key("profile_share").value(c.profile_share);
     j.key("detail").value(c.detail);
     j.end_object();
   }

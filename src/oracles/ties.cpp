@@ -17,9 +17,9 @@ double extreme(const std::vector<Vec3>& points, const Vec3& d) {
 }
 
 // Two or more faces touching the support of `hull` along `d` (vertices within
-// `window` of the extreme) are equally aligned with `d`, to kIncidentAlignment.
+// `window` of the extreme) are equally aligned with `d`, to `alignment_tie`.
 bool tied_incident_faces(const Hull& hull, const Pose& pose, const std::vector<Vec3>& world, const Vec3& d,
-                         double window) {
+                         double window, double alignment_tie) {
   const double top = extreme(world, d);
   double best = -INFINITY;
   std::vector<double> alignments;
@@ -32,8 +32,16 @@ bool tied_incident_faces(const Hull& hull, const Pose& pose, const std::vector<V
     best = std::max(best, alignment);
   }
   const auto equal = std::count_if(alignments.begin(), alignments.end(),
-                                   [&](double a) { return a >= best - tol::kIncidentAlignment; });
+                                   [&](double a) { return a >= best - alignment_tie; });
   return equal >= 2;
+}
+
+// A face of `hull` perpendicular to `d` to within `resolution`: whether it
+// faces the other hull is rounding.
+bool has_perpendicular_face(const Hull& hull, const Pose& pose, const Vec3& d, double resolution) {
+  for (int f = 0; f < hull.face_count(); ++f)
+    if (std::abs(pose.rotate(hull.face_normal(f)).dot(d)) <= resolution) return true;
+  return false;
 }
 
 // More than one edge of `hull` has both ends within `window` of its support along `d`.
@@ -68,8 +76,12 @@ Ties classify_ties(const Scene& s, const std::vector<RankedAxis>& ranked, double
     if (!same_feature) ties.feature = true;
   }
   const Vec3& n = best.normal;
-  ties.incident_face = tied_incident_faces(s.hull_a, s.pose_a, s.world_a, n, window) ||
-                       tied_incident_faces(s.hull_b, s.pose_b, s.world_b, -n, window);
+  // A profile's precision (float) resolves alignments only to its ulps.
+  const double alignment_tie = tol::kIncidentAlignment + tol::kWorldUlps * s.precision_epsilon;
+  ties.incident_face = tied_incident_faces(s.hull_a, s.pose_a, s.world_a, n, window, alignment_tie) ||
+                       tied_incident_faces(s.hull_b, s.pose_b, s.world_b, -n, window, alignment_tie);
+  ties.perpendicular_face = s.precision_epsilon > 0 && (has_perpendicular_face(s.hull_a, s.pose_a, n, alignment_tie) ||
+                                                        has_perpendicular_face(s.hull_b, s.pose_b, n, alignment_tie));
   for (size_t k = 0; k < ranked.size() && ranked[k].overlap - best.overlap <= tie && !ties.supporting_edge; ++k)
     if (ranked[k].kind == AxisKind::edge_edge)
       ties.supporting_edge = several_supporting_edges(s.hull_a, s.world_a, ranked[k].normal, window) ||

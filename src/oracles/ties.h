@@ -29,9 +29,16 @@ struct Ties {
   /// support (a thin face, parallel edges).
   bool supporting_edge = false;
 
-  bool any() const { return direction || feature || incident_face || supporting_edge; }
+  /// Under a profile's precision (float) only: a face of either hull is
+  /// perpendicular to the normal within that precision, so whether it faces
+  /// the other hull, and adds its points to the contacts, is rounding (a
+  /// float variant on a tetrahedron inside a cylinder: one of its side faces
+  /// faced the cylinder's face in one frame and not in the moved one).
+  bool perpendicular_face = false;
+
+  bool any() const { return direction || feature || incident_face || supporting_edge || perpendicular_face; }
   /// The contact set is not determined by the geometry.
-  bool contacts_open() const { return feature || incident_face || supporting_edge; }
+  bool contacts_open() const { return feature || incident_face || supporting_edge || perpendicular_face; }
 };
 
 /// Classifies the ties of `scene` given its ranked axes (best first).

@@ -19,6 +19,12 @@ void before(const mfz_hull& a, mfz_pose& pose_a, const mfz_hull& b, mfz_pose& po
 extern const char* const name;
 }  // namespace mutant
 
+// A variant that declares a profile defines MUTANT_PROFILE before including
+// this file; the others declare none.
+#ifdef MUTANT_PROFILE
+extern "C" __attribute__((visibility("default"))) const char* mfz_generator_profile(void) { return MUTANT_PROFILE; }
+#endif
+
 #define MFZ_EXPORT extern "C" __attribute__((visibility("default")))
 
 MFZ_EXPORT int32_t mfz_abi_version(void) { return MFZ_ABI_VERSION; }

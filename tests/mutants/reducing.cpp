@@ -1,6 +1,7 @@
 // Correct: the built-in generator reducing its manifold to at most 4 contacts
 // (deepest; farthest from it; largest triangle; largest quadrilateral), as
 // engines with persistent manifolds do. It must pass.
+#define MUTANT_PROFILE "max-contacts=4"
 #include "mutant_plugin.h"
 
 namespace {
