@@ -155,13 +155,6 @@ std::optional<std::string> compare_contacts(const Answer& original, const Answer
   return std::nullopt;
 }
 
-// Separated in truth but within the profile's margin: a margin engine may
-// report either colliding answer, and its "depth" is the gap.
-bool within_margin(const RelationInput& in) {
-  return in.profile.margin > 0 && !in.oracles.exact.colliding &&
-         -in.oracles.exact.signed_depth <= in.profile.margin * in.scene.scale + in.scene.length_tolerance(tol::kTouching);
-}
-
 // Two candidates along one direction from different features: a single
 // contact must lie in the region of the other answer's contacts.
 std::optional<std::string> single_contact_in_region(const Answer& x, const Answer& y, const Tolerances& tol) {
@@ -182,7 +175,7 @@ std::optional<std::string> single_contact_in_region(const Answer& x, const Answe
 // normal and contacts are compared unless another minimal axis exists.
 std::optional<std::string> compare(const Answer& original, const Answer& other, const RelationInput& in,
                                    const Tolerances& tol) {
-  if (in.oracles.touching || within_margin(in)) return std::nullopt;  // either answer passes; nothing to compare
+  if (in.oracles.touching || separated_within_margin(in.scene, in.oracles, in.profile)) return std::nullopt;  // either answer passes; nothing to compare
   // Touching in the transformed frame too: a case moved 1e4 L out is
   // resolved only to that frame's rounding (a float engine's, with its profile).
   if (original.colliding != other.colliding) {

@@ -53,10 +53,7 @@ struct Context {
   double margin() const { return profile.margin * L; }
   /// Separated in truth, but within the profile's margin: a margin engine
   /// reports such a case as colliding with a positive penetration.
-  bool within_margin() const {
-    return profile.margin > 0 && !oracles.exact.colliding &&
-           -oracles.exact.signed_depth <= margin() + scene.length_tolerance(tol::kTouching);
-  }
+  bool within_margin() const { return separated_within_margin(scene, oracles, profile); }
   /// n is a face axis (of A, or of B reversed), which face-bias lets exceed
   /// the exact depth by up to its fraction.
   bool biased_face_axis() const;
@@ -301,26 +298,21 @@ InvariantCheck check_separates(const Context& c) {
 }
 
 // True when unit `n` is the outward normal of a face of A or the inward
-// normal of a face of B, to the generator's coplanarity (tol::kCoplanarSine).
-bool along_a_face_normal(const Scene& s, const Vec3& n) {
+// normal of a face of B, to `sine` (the generator's coplanarity by default).
+bool along_a_face_normal(const Scene& s, const Vec3& n, double sine = tol::kCoplanarSine) {
+  const auto along = [&](const Vec3& normal, const Vec3& d) { return normal.dot(d) > 0 && normal.cross(d).norm() <= sine; };
   for (int f = 0; f < s.hull_a.face_count(); ++f)
-    if (coplanar_normals(s.pose_a.rotate(s.hull_a.face_normal(f)), n)) return true;
+    if (along(s.pose_a.rotate(s.hull_a.face_normal(f)), n)) return true;
   for (int f = 0; f < s.hull_b.face_count(); ++f)
-    if (coplanar_normals(s.pose_b.rotate(s.hull_b.face_normal(f)), -n)) return true;
+    if (along(s.pose_b.rotate(s.hull_b.face_normal(f)), -n)) return true;
   return false;
 }
 
 // An engine's face axis is the face's normal to its own precision: within
 // 1e-6 rad (tolerances.h, kRelationNormal) and 64 of its ulps.
 bool Context::biased_face_axis() const {
-  if (profile.face_bias <= 0) return false;
-  const double sine = tol::kRelationNormal + tol::kWorldUlps * scene.precision_epsilon;
-  const Vec3 u = n.normalized();
-  for (int f = 0; f < scene.hull_a.face_count(); ++f)
-    if ((scene.pose_a.rotate(scene.hull_a.face_normal(f)) - u).norm() <= sine) return true;
-  for (int f = 0; f < scene.hull_b.face_count(); ++f)
-    if ((scene.pose_b.rotate(scene.hull_b.face_normal(f)) + u).norm() <= sine) return true;
-  return false;
+  return profile.face_bias > 0 &&
+         along_a_face_normal(scene, n.normalized(), tol::kRelationNormal + tol::kWorldUlps * scene.precision_epsilon);
 }
 
 // Completeness: where the region is well defined, the contacts projected
@@ -424,6 +416,11 @@ Verdict run_rows(const Context& c, int32_t status, Wanted&& wanted) {
 }
 
 }  // namespace
+
+bool separated_within_margin(const Scene& scene, const OracleAnswers& oracles, const Profile& profile) {
+  return profile.margin > 0 && !oracles.exact.colliding &&
+         -oracles.exact.signed_depth <= profile.margin * scene.scale + scene.length_tolerance(tol::kTouching);
+}
 
 const std::vector<std::string>& invariant_names() {
   static const std::vector<std::string> names = [] {

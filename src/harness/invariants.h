@@ -29,6 +29,10 @@ struct InvariantCheck {
   double profile_share = -1;
 };
 
+/// Apart in truth, but by no more than the profile's margin (x L): a margin
+/// engine may report the case colliding, with the gap as its penetration.
+bool separated_within_margin(const Scene& scene, const OracleAnswers& oracles, const Profile& profile);
+
 /// The invariant names, in the contract's order.
 const std::vector<std::string>& invariant_names();
 
