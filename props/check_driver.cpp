@@ -146,13 +146,18 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
   catch_interruptions();
   log << "manifuzz check: generator " << generator->name() << ", seed " << options.seed << ", "
       << (options.selection.level == Level::strict ? "strict" : "contract") << " level (replay with --seed "
-      << options.seed << "), profile " << profile->text() << "\n";
+      << options.seed << "), profile " << profile->text();
+  if (!options.hull_families.empty()) {
+    log << ", families";
+    for (const std::string& family : options.hull_families) log << " " << family;
+  }
+  log << "\n";
   // A profile's precision resolves cases only so far out (tolerances.h):
   // farther frames are not drawn.
   const double farthest = options.selection.profile.precision_epsilon > 0
                               ? tol::kProfileFarthestFrame / (tol::kWorldUlps * options.selection.profile.precision_epsilon)
                               : std::numeric_limits<double>::infinity();
-  const auto gen = any_case(farthest);
+  const auto gen = any_case(farthest, options.hull_families);
   rc::Random random(options.seed);
   Statistics stats;
   CheckResult result;

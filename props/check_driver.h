@@ -7,6 +7,7 @@
 #include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "case_property.h"
 
@@ -23,6 +24,8 @@ struct CheckOptions {
   Selection selection;
   /// --profile: keys that replace the generator's declared profile.
   std::optional<std::string> profile_override;
+  /// --family: the hull families drawn (empty: every family).
+  std::vector<std::string> hull_families;
 };
 
 /// What a run found. `finding` is empty when nothing was.

@@ -1,7 +1,9 @@
 #include "families.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 #include "generator/edge_arcs.h"
 #include "geometry/hull.h"
@@ -426,10 +428,41 @@ const std::vector<std::string>& placement_names() {
   return names;
 }
 
-rc::Gen<GeneratedCase> any_case(double farthest_frame) {
-  return rc::gen::exec([farthest_frame] {
+std::optional<std::vector<std::string>> hull_families_named(const std::string& text, std::string& error) {
+  static const std::vector<std::string> boxes = {"cube", "box", "slab", "needle", "anisotropic-box"};
+  const auto& all = hull_family_names();
+  std::vector<std::string> chosen;
+  const auto add = [&](const std::string& name) {
+    if (std::find(chosen.begin(), chosen.end(), name) == chosen.end()) chosen.push_back(name);
+  };
+  std::stringstream words(text);
+  for (std::string word; std::getline(words, word, ',');) {
+    if (word == "boxes") {
+      for (const std::string& name : boxes) add(name);
+    } else if (word == "hulls") {
+      for (const std::string& name : all) add(name);
+    } else if (std::find(all.begin(), all.end(), word) != all.end()) {
+      add(word);
+    } else {
+      error = "unknown family '" + word + "': expected boxes, hulls or a hull family (" + [&] {
+        std::string list;
+        for (const std::string& name : all) list += (list.empty() ? "" : ", ") + name;
+        return list;
+      }() + ")";
+      return std::nullopt;
+    }
+  }
+  if (chosen.empty()) {
+    error = "--family takes a family name";
+    return std::nullopt;
+  }
+  return chosen;
+}
+
+rc::Gen<GeneratedCase> any_case(double farthest_frame, std::vector<std::string> hull_families) {
+  return rc::gen::exec([farthest_frame, hull_families] {
     GeneratedCase out;
-    const auto& names = hull_family_names();
+    const auto& names = hull_families.empty() ? hull_family_names() : hull_families;
     out.hull_a = names[pick(0, static_cast<int>(names.size()) - 1)];
     out.hull_b = names[pick(0, static_cast<int>(names.size()) - 1)];
     std::vector<Vec3> points_a = *hull_points(out.hull_a);

@@ -8,6 +8,7 @@
 
 #include <ostream>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include "case/case_file.h"
@@ -38,10 +39,18 @@ const std::vector<std::string>& placement_names();
 
 /// Points of one hull family (local space, size about 1).
 rc::Gen<std::vector<Vec3>> hull_points(const std::string& family);
-/// A whole case: two hulls, each from any family, placed by any placement.
-/// `farthest_frame`: the far frames drawn lie at most this many diameters
-/// of A from the origin (a float profile resolves only 130 L out).
-rc::Gen<GeneratedCase> any_case(double farthest_frame = std::numeric_limits<double>::infinity());
+/// `--family`'s value: comma-separated hull family names or groups
+/// (`boxes`: the cube and the box families, which a box-only generator such
+/// as ODE's dBoxBox takes; `hulls`: every family). nullopt and a one-line
+/// `error` for a name that is neither.
+std::optional<std::vector<std::string>> hull_families_named(const std::string& text, std::string& error);
+
+/// A whole case: two hulls, each from any of `hull_families` (empty: every
+/// family), placed by any placement. `farthest_frame`: the far frames drawn
+/// lie at most this many diameters of A from the origin (a float profile
+/// resolves only 130 L out).
+rc::Gen<GeneratedCase> any_case(double farthest_frame = std::numeric_limits<double>::infinity(),
+                                std::vector<std::string> hull_families = {});
 
 /// RapidCheck prints a counterexample with this: the case file itself.
 void showValue(const GeneratedCase& c, std::ostream& os);

@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ clang            # toolchains: g++ builds all, clang also the fuzzers
+  pkgconf                                # finds Bullet and ODE, which ship no usable CMake config
   libclang-rt-14-dev libfuzzer-14-dev    # sanitizer and libFuzzer runtimes for clang
   libeigen3-dev libccd-dev libqhull-dev  # geometry, the libccd oracle, hulls (qhull_r)
   librapidcheck-dev libgtest-dev libbenchmark-dev

@@ -13,8 +13,10 @@
 #include <unistd.h>
 
 #include "check_driver.h"
+#include "families.h"
 #include "finding_file.h"
 #include "cli/arguments.h"
+#include "cli/program_files.h"
 
 namespace mfz::cli {
 
@@ -125,17 +127,17 @@ int run_jobs(const props::CheckOptions& options, int jobs) {
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile"},
+      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family"},
       {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
   if (!args->positional.empty()) return usage("unexpected argument '" + args->positional[0] + "'");
   props::CheckOptions options;
-  options.generator = args->get("--generator", "builtin");
+  options.generator = resolve_generator(args->get("--generator", "builtin"));
   options.out_dir = args->get("--out", "failures");
   if (args->options.count("--cases")) {
     options.cases = parse_count(args->get("--cases", ""), 1, 1LL << 50);
@@ -164,6 +166,11 @@ int check_command(const std::vector<std::string>& words) {
         std::find(relations.begin(), relations.end(), only) == relations.end())
       return usage("--only takes an invariant or relation name, not '" + only + "'");
     options.selection.names.insert(only);
+  }
+  if (args->options.count("--family")) {
+    const auto families = props::hull_families_named(args->get("--family", ""), error);
+    if (!families) return usage(error);
+    options.hull_families = *families;
   }
   if (args->has("--quiet")) options.progress_every = 0;
   if (args->has("--strict")) options.selection.level = props::Level::strict;

@@ -7,6 +7,7 @@
 #include "harness/case_run.h"
 #include "oracles/minkowski_difference.h"
 #include "cli/arguments.h"
+#include "cli/program_files.h"
 #include "generator/clipping_generator.h"
 #include "harness/report.h"
 
@@ -127,7 +128,7 @@ int explain_command(const std::vector<std::string>& words) {
               << " (usage: manifuzz explain [--generator G] [--strict] [--profile P] FILE)\n";
     return kExitInputError;
   }
-  const std::string spec = args->get("--generator", "builtin");
+  const std::string spec = resolve_generator(args->get("--generator", "builtin"));
   std::unique_ptr<GeneratorSession> session = nullptr;
   if (const auto timeout = call_timeout(*args, error)) session = open_session(spec, *timeout, error);
   if (!session) {

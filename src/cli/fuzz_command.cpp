@@ -36,7 +36,7 @@ int fuzz_command(const std::vector<std::string>& words) {
   if (!args) return fail(error + " (" + kUsage + ")");
   if (!args->positional.empty()) return fail("unexpected argument " + mfz::quoted(args->positional[0]) + " (" + kUsage + ")");
   props::FuzzOptions options;
-  options.generator = args->get("--generator", "builtin");
+  options.generator = resolve_generator(args->get("--generator", "builtin"));
   options.corpus_dir = args->get("--corpus", options.corpus_dir);
   options.out_dir = args->get("--out", options.out_dir);
   if (options.corpus_dir.empty()) return fail("--corpus needs a folder name");

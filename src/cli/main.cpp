@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cli/arguments.h"
+#include "cli/program_files.h"
 
 namespace {
 
@@ -20,6 +21,8 @@ constexpr const char* kUsage =
     "                                             --profile P replaces keys of the generator's declared\n"
     "                                             profile: precision=float|double max-contacts=K\n"
     "                                             face-bias=F margin=M, or none (every command takes it)\n"
+    "                                             --family F draws only these hull families: boxes,\n"
+    "                                             hulls or family names, comma-separated\n"
     "  fuzz    [--generator G] [--seconds T] [--jobs J] [--corpus DIR] [--out DIR] [--strict]\n"
     "                                             libFuzzer on J cores; each distinct finding is minimised\n"
     "                                             and written to --out; the corpus (default fuzz-corpus)\n"
@@ -27,8 +30,19 @@ constexpr const char* kUsage =
     "  promote FILE [--name NAME] [--dir DIR] [--generator G] [--strict]\n"
     "                                             minimise a finding (case file or fuzz artefact) into\n"
     "                                             DIR/NAME.case (default corpus/regressions), a regression case\n"
-    "G is 'builtin' (the default) or a path to a generator plugin .so.\n"
     "Exit status: 0 nothing found, 1 an invariant was violated, 2 usage, load or input error.\n";
+
+// What --help lists after the usage: the generators G may name (those whose
+// plugin is here) and the checks --only takes.
+void print_names() {
+  std::cout << "G is 'builtin' (the default), a path to a generator plugin .so, or one of:";
+  for (const std::string& name : mfz::cli::bundled_generator_names())
+    if (mfz::cli::resolve_generator(name) != name) std::cout << " " << name;
+  std::cout << "\n  checks:";
+  for (const std::string& name : mfz::invariant_names()) std::cout << " " << name;
+  for (const std::string& name : mfz::props::relation_names()) std::cout << " " << name;
+  std::cout << "\n";
+}
 
 }  // namespace
 
@@ -36,6 +50,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> words(argv + 1, argv + argc);
   if (words.empty() || words[0] == "--help" || words[0] == "-h" || words[0] == "help") {
     std::cout << kUsage;
+    print_names();
     return words.empty() ? mfz::cli::kExitInputError : mfz::cli::kExitClean;
   }
   const std::string command = words[0];

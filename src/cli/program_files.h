@@ -12,4 +12,14 @@ namespace mfz::cli {
 /// manifuzz) that exists, as an absolute path; empty when none does.
 std::string beside_this_program(const std::vector<std::string>& candidates);
 
+/// The generators that come with manifuzz as plugins, by the names
+/// `--generator` takes: the tutorial's unfixed method and the peers built
+/// here (Bullet's and ODE's, when their libraries were found).
+const std::vector<std::string>& bundled_generator_names();
+
+/// `--generator`'s value as Generator::open takes it: a bundled name becomes
+/// the path of its plugin; `builtin` and paths stay as they are. A bundled
+/// name whose plugin was not built stays a name, and fails to open.
+std::string resolve_generator(const std::string& spec);
+
 }  // namespace mfz::cli

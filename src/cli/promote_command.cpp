@@ -81,6 +81,7 @@ int promote_command(const std::vector<std::string>& words) {
   const CaseFile& finding_case = *parsed.value;
   std::string spec = args->get("--generator", generator_in_notes(finding_case));
   if (spec.empty()) spec = "builtin";
+  spec = resolve_generator(spec);
   const std::string dir = args->get("--dir", kDefaultDir);
   const double seconds = args->options.count("--seconds") ? parse_seconds(args->get("--seconds", "")).value_or(-1)
                                                            : kDefaultShrinkSeconds;

@@ -7,6 +7,7 @@
 
 #include "case_property.h"
 #include "cli/arguments.h"
+#include "cli/program_files.h"
 #include "harness/report.h"
 
 namespace mfz::cli {
@@ -62,7 +63,7 @@ int replay_command(const std::vector<std::string>& words) {
   }
   std::unique_ptr<GeneratorSession> session = nullptr;
   if (const auto timeout = call_timeout(*args, error))
-    session = open_session(args->get("--generator", "builtin"), *timeout, error);
+    session = open_session(resolve_generator(args->get("--generator", "builtin")), *timeout, error);
   if (!session) {
     std::cerr << "manifuzz replay: " << error << "\n";
     return kExitInputError;

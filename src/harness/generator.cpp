@@ -38,7 +38,7 @@ std::string one_line(const char* text) {
 std::optional<Generator> Generator::open(const std::string& spec, std::string& error) {
   if (spec == "builtin") return builtin();
   if (spec.find('/') == std::string::npos && spec.find(".so") == std::string::npos) {
-    error = "unknown generator '" + spec + "': expected 'builtin' or a path to a plugin .so";
+    error = "unknown generator '" + spec + "': expected 'builtin', a generator that comes with manifuzz and was built here (manifuzz --help lists them) or a path to a plugin .so";
     return std::nullopt;
   }
   // dlopen searches the system's library path for a name without a slash:
