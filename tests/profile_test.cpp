@@ -139,6 +139,23 @@ TEST(ProfileRelaxes, MarginAcceptsContactsBeforeTouchingWithinItsDistanceOnly) {
   }
 }
 
+// A margin engine overlapping by the resting box's 0.1 still keeps an
+// incident point that lies a little above the reference face (Bullet's clip
+// keeps points up to its breaking threshold): a contact's positive distance
+// within the margin passes, past it or without a margin it fails.
+TEST(ProfileRelaxes, MarginAcceptsAContactAboveTheReferenceFaceOfAnOverlappingCase) {
+  const CaseRun run = resting_box();
+  ASSERT_TRUE(run.oracles.exact.colliding);
+  const double L = run.scene.scale, above = 0.005 * L;
+  mfz_manifold m = run.manifold;
+  mfz_contact& c = m.contacts[0];
+  c.point_on_b = {c.point_on_a.x, c.point_on_a.y, c.point_on_a.z + above};
+  c.penetration = above;
+  EXPECT_EQ(status_of(run, m, "negative-penetration", {}), CheckStatus::fail);
+  EXPECT_EQ(status_of(run, m, "negative-penetration", parsed("margin=0.01")), CheckStatus::pass);
+  EXPECT_EQ(status_of(run, m, "negative-penetration", parsed("margin=0.004")), CheckStatus::fail);
+}
+
 TEST(ProfileReport, EachCheckSaysWhatTheProfileAddedToItsTolerance) {
   const CaseRun run = resting_box();
   Scene scene = run.scene;

@@ -3,6 +3,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
+#include <fstream>
 
 namespace mfz::cli {
 
@@ -57,6 +59,19 @@ std::optional<double> parse_seconds(const std::string& text) {
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v) || v < 0) return std::nullopt;
   return v;
+}
+
+bool junit_writable(const std::string& path, std::string& error) {
+  if (path.empty()) {
+    error = "--junit needs a file name";
+    return false;
+  }
+  std::ofstream probe(path, std::ios::app);
+  if (!probe) {
+    error = "cannot write --junit file '" + path + "': " + std::strerror(errno);
+    return false;
+  }
+  return true;
 }
 
 std::optional<std::string> profile_override(const Arguments& args) {

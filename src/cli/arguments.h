@@ -51,6 +51,10 @@ bool apply_profile(const Arguments& args, const GeneratorSession& session, props
 /// --profile's text, when given.
 std::optional<std::string> profile_override(const Arguments& args);
 
+/// Whether `path` can be written (--junit is tried before a run, so that a
+/// report is never lost to it after the run); false and a one-line `error`.
+bool junit_writable(const std::string& path, std::string& error);
+
 /// A finite number >= 0, or nullopt.
 std::optional<double> parse_seconds(const std::string& text);
 
@@ -59,5 +63,6 @@ int explain_command(const std::vector<std::string>& words);
 int check_command(const std::vector<std::string>& words);
 int promote_command(const std::vector<std::string>& words);
 int fuzz_command(const std::vector<std::string>& words);
+int diff_command(const std::vector<std::string>& words);
 
 }  // namespace mfz::cli

@@ -27,6 +27,11 @@ constexpr const char* kUsage =
     "                                             libFuzzer on J cores; each distinct finding is minimised\n"
     "                                             and written to --out; the corpus (default fuzz-corpus)\n"
     "                                             grows and is resumed from; needs the clang build\n"
+    "  diff    --generator G1 --against G2 [--cases N] [--seconds T] [--seed S] [--family F] [--out DIR]\n"
+    "                                             the same cases to both; where they disagree (colliding,\n"
+    "                                             depth, normal, contact region) beyond both profiles, whom\n"
+    "                                             the oracles side with; a minimised case per kind; with\n"
+    "                                             FILE... compares those; --against-profile P for G2\n"
     "  promote FILE [--name NAME] [--dir DIR] [--generator G] [--strict]\n"
     "                                             minimise a finding (case file or fuzz artefact) into\n"
     "                                             DIR/NAME.case (default corpus/regressions), a regression case\n"
@@ -60,6 +65,7 @@ int main(int argc, char** argv) {
   if (command == "check") return mfz::cli::check_command(words);
   if (command == "fuzz") return mfz::cli::fuzz_command(words);
   if (command == "promote") return mfz::cli::promote_command(words);
+  if (command == "diff") return mfz::cli::diff_command(words);
   std::cerr << "manifuzz: unknown command '" << command << "' (try manifuzz --help)\n";
   return mfz::cli::kExitInputError;
 }

@@ -1,0 +1,143 @@
+// manifuzz diff --generator G1 --against G2 [--cases N] [--seconds T] [--seed S] [--family F] [--out DIR]
+//               [--profile P] [--against-profile P] [--junit FILE] [FILE...]
+// The same cases to both generators; where they disagree beyond both
+// profiles, which one the oracles side with; the first case of each kind
+// minimised into --out; a summary table. With case files, compares those.
+#include <iostream>
+#include <random>
+
+#include "cli/arguments.h"
+#include "cli/program_files.h"
+#include "differential_run.h"
+#include "families.h"
+#include "harness/junit_report.h"
+
+namespace mfz::cli {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: manifuzz diff --generator G1 --against G2 [--cases N] [--seconds T] [--seed S] [--family F] [--out DIR] "
+    "[--profile P] [--against-profile P] [--junit FILE] [FILE...]";
+
+/// Without --cases or --seconds a diff compares this many cases.
+constexpr long long kDefaultCases = 2000;
+
+int fail(const std::string& why) {
+  std::cerr << "manifuzz diff: " << why << "\n";
+  return kExitInputError;
+}
+
+std::vector<JunitCase> junit_cases(const props::DiffResult& r) {
+  std::vector<JunitCase> cases;
+  const std::string classname = "manifuzz.diff." + r.first_name + ".against." + r.second_name;
+  for (const std::string& kind : props::disagreement_kinds()) {
+    JunitCase c{classname, kind};
+    if (const auto found = r.kinds.find(kind); found != r.kinds.end()) {
+      c.failure_message = std::to_string(found->second.cases) + " cases disagree on " + kind;
+      c.failure_text = found->second.example_detail + "\nminimised case: " + found->second.example_path;
+    }
+    cases.push_back(c);
+  }
+  for (const auto& [kind, tally] : r.kinds)
+    if (kind == "crash" || kind == "hang" || kind == "refused")
+      cases.push_back({classname, kind, 0, false, tally.example_detail, tally.example_path});
+  return cases;
+}
+
+// `diff ... FILE...`: the comparison on each given case.
+int compare_files(const Arguments& args, const std::vector<std::string>& files, props::DiffSide& first,
+                  props::DiffSide& second) {
+  int status = kExitClean;
+  for (const std::string& file : files) {
+    const CaseParse parsed = read_case_file(file);
+    if (!parsed.value) {
+      std::cerr << "manifuzz diff: " << parsed.error << "\n";
+      status = kExitInputError;
+      continue;
+    }
+    bool invalid = false;
+    const auto d = props::compare_generators(*parsed.value, first, second, invalid);
+    if (invalid) {
+      std::cerr << "manifuzz diff: " << file << ": not a valid case for this pair\n";
+      status = kExitInputError;
+    } else if (d && d->sides_with == "both") {
+      std::cout << "tie " << file << ": " << d->kind << ", " << d->detail << "; the oracles confirm both\n";
+    } else if (d) {
+      std::cout << "DISAGREE " << d->kind << " " << file << ": " << d->detail << "; the oracles side with "
+                << d->sides_with << "\n";
+      if (status == kExitClean) status = kExitViolation;
+    } else {
+      std::cout << "agree " << file << "\n";
+    }
+  }
+  (void)args;
+  return status;
+}
+
+}  // namespace
+
+int diff_command(const std::vector<std::string>& words) {
+  std::string error;
+  const auto args = parse_arguments(words,
+                                    {"--generator", "--against", "--cases", "--seconds", "--seed", "--out", "--family",
+                                     "--call-timeout", "--profile", "--against-profile", "--junit"},
+                                    {"--quiet"}, error);
+  if (!args) return fail(error + " (" + kUsage + ")");
+  if (!args->options.count("--generator") || !args->options.count("--against"))
+    return fail(std::string("give both --generator and --against (") + kUsage + ")");
+  props::DiffOptions options;
+  options.generator = resolve_generator(args->get("--generator", ""));
+  options.against = resolve_generator(args->get("--against", ""));
+  options.out_dir = args->get("--out", "failures");
+  if (args->options.count("--cases")) {
+    options.cases = parse_count(args->get("--cases", ""), 1, 1LL << 50);
+    if (!options.cases) return fail("--cases takes a whole number >= 1");
+  }
+  if (args->options.count("--seconds")) {
+    options.seconds = parse_seconds(args->get("--seconds", ""));
+    if (!options.seconds) return fail("--seconds takes a number >= 0");
+  }
+  if (!options.cases && !options.seconds) options.cases = kDefaultCases;
+  if (args->options.count("--seed")) {
+    const auto seed = parse_count(args->get("--seed", ""), 0, (1LL << 62));
+    if (!seed) return fail("--seed takes a whole number >= 0");
+    options.seed = static_cast<uint64_t>(*seed);
+  } else {
+    options.seed = std::random_device{}() % 1000000000;
+  }
+  if (args->options.count("--family")) {
+    const auto families = props::hull_families_named(args->get("--family", ""), error);
+    if (!families) return fail(error);
+    options.hull_families = *families;
+  }
+  const auto timeout = call_timeout(*args, error);
+  if (!timeout) return fail(error);
+  options.call_timeout = *timeout;
+  options.profile_override = profile_override(*args);
+  if (args->options.count("--against-profile")) options.against_profile_override = args->get("--against-profile", "");
+  if (args->has("--quiet")) options.progress_every = 0;
+  const std::string junit = args->get("--junit", "");
+  if (args->options.count("--junit") && !junit_writable(junit, error)) return fail(error);
+
+  if (!args->positional.empty()) {
+    auto one = open_session(options.generator, options.call_timeout, error);
+    auto two = one ? open_session(options.against, options.call_timeout, error) : nullptr;
+    if (!two) return fail(error);
+    const auto p1 = profile_in_force(one->declared_profile(), options.profile_override, error);
+    const auto p2 = p1 ? profile_in_force(two->declared_profile(), options.against_profile_override, error) : std::nullopt;
+    if (!p2) return fail(error);
+    props::DiffSide first{one.get(), *p1}, second{two.get(), *p2};
+    return compare_files(*args, args->positional, first, second);
+  }
+
+  const auto result = props::run_diff(options, std::cerr, error);
+  if (!result) return fail(error);
+  props::print_diff_summary(*result, std::cout);
+  if (!junit.empty() &&
+      !write_junit(junit, "manifuzz diff", junit_cases(*result), result->seconds, error))
+    return fail(error);
+  if (!result->kinds.empty()) return kExitViolation;
+  return result->interrupted ? kExitInterrupted : kExitClean;
+}
+
+}  // namespace mfz::cli
