@@ -210,5 +210,34 @@ expect_one_line_error 'call-timeout takes' -- "$manifuzz" check --call-timeout 0
 manifuzz_path=$(cd "$(dirname "$manifuzz")" && pwd)/$(basename "$manifuzz")
 expect 0 'verdict pass' -- sh -c "cd '$plugin_dir' && '$manifuzz_path' replay --generator libmanifuzz_clipping.so '$good'"
 
+# Generators by name (the tutorial always; the peers where their libraries were found).
+expect 1 'VIOLATION ' -- "$manifuzz" replay --generator tutorial "$source_dir/corpus/regressions/f1-frustum-side-planes-slope-inwards.case"
+expect_one_line_error "unknown generator 'bulet'" -- "$manifuzz" replay --generator bulet "$good"
+expect_one_line_error "unknown family 'spheres'" -- "$manifuzz" check --family spheres --cases 5
+expect 0 'families cube box slab needle anisotropic-box' -- "$manifuzz" check --family boxes --cases 20 --seed 3 --out "$scratch/none"
+if [ -f "$plugin_dir/libmanifuzz_peer_ode_box.so" ]; then
+  expect 0 'manifuzz check: 100 cases' -- "$manifuzz" check --generator ode-box --family boxes --only finite --cases 100 --seed 3 --out "$scratch/none"
+  expect 1 'VIOLATION refused ' -- "$manifuzz" replay --generator ode-box "$source_dir/corpus/tetrahedron_tip_in_face.case"
+fi
+
+# diff: a generator against itself agrees; against the tutorial, disagreements
+# with their minimised cases; case files compared one by one.
+expect 0 '0 differ where both are right' -- "$manifuzz" diff --generator builtin --against "$plugin_dir/libmanifuzz_clipping.so" --cases 100 --seed 3 --out "$scratch/diff" --quiet
+expect 1 'disagreement +cases +first +second' -- "$manifuzz" diff --generator builtin --against tutorial --cases 300 --seed 3 --out "$scratch/diff" --quiet
+expect 0 'agree .*box_on_box.case' -- "$manifuzz" diff --generator builtin --against tutorial "$good"
+expect_one_line_error 'give both --generator and --against' -- "$manifuzz" diff --generator builtin --cases 5
+tutorial_case=$(ls "$scratch"/diff/diff-*.case | head -1)
+expect 1 'DISAGREE ' -- "$manifuzz" diff --generator builtin --against tutorial "$tutorial_case"
+
+# --junit: XML a CI system reads, the finding as a failure; an unwritable
+# file is refused before the run.
+expect 1 'VIOLATION finite ' -- "$manifuzz" replay --generator "$plugin_dir/libmfz_test_forgetful.so" --junit "$scratch/junit/replay.xml" "$good"
+check_that "replay --junit writes a failure for the finding" grep -q '<failure message="finite' "$scratch/junit/replay.xml"
+expect 1 'VIOLATION crash ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --cases 200 --seed 3 --out "$scratch/crash" --quiet --junit "$scratch/junit/check.xml"
+check_that "check --junit has a test case per check and the crash as a failure" sh -c "grep -c '<testcase' '$scratch/junit/check.xml' | grep -qx 23 && grep -q 'name=\"crash\"' '$scratch/junit/check.xml'"
+expect 1 'disagreement' -- "$manifuzz" diff --generator builtin --against tutorial --cases 300 --seed 3 --out "$scratch/diff" --quiet --junit "$scratch/junit/diff.xml"
+check_that "diff --junit names each kind" sh -c "grep -q 'name=\"contact-region\"' '$scratch/junit/diff.xml' && grep -q '<failure' '$scratch/junit/diff.xml'"
+expect_one_line_error 'cannot write --junit file' -- "$manifuzz" check --cases 5 --junit /proc/version/x.xml
+
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace mfz::cli {
@@ -66,6 +67,10 @@ bool junit_writable(const std::string& path, std::string& error) {
     error = "--junit needs a file name";
     return false;
   }
+  // Its folder is made, as --out's is.
+  std::error_code ec;
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
   std::ofstream probe(path, std::ios::app);
   if (!probe) {
     error = "cannot write --junit file '" + path + "': " + std::strerror(errno);

@@ -17,6 +17,7 @@
 #include "finding_file.h"
 #include "cli/arguments.h"
 #include "cli/program_files.h"
+#include "harness/junit_report.h"
 
 namespace mfz::cli {
 
@@ -61,7 +62,7 @@ int run_one_job(props::CheckOptions options, int job, int jobs, int tally_fd) {
 // `check --jobs J`: J processes, each on its own stream (seeds S .. S+J-1),
 // the cases shared out; the first finding stops the others (SIGTERM: they
 // end with their summary) and is the run's.
-int run_jobs(const props::CheckOptions& options, int jobs) {
+int run_jobs(const props::CheckOptions& options, int jobs, std::string& violation, long long& cases, double& seconds) {
   std::vector<pid_t> children;
   std::vector<int> tallies;
   std::cerr << "manifuzz check: " << jobs << " jobs on seeds " << options.seed << " to " << options.seed + jobs - 1
@@ -80,9 +81,6 @@ int run_jobs(const props::CheckOptions& options, int jobs) {
     tallies.push_back(fds[0]);
   }
   int worst = kExitClean;
-  std::string violation;
-  long long cases = 0;
-  double seconds = 0;
   for (size_t done = 0; done < children.size(); ++done) {
     int status = 0;
     const pid_t pid = wait(&status);
@@ -121,17 +119,40 @@ int run_jobs(const props::CheckOptions& options, int jobs) {
   return worst;
 }
 
+// The JUnit report of a check: one test case per invariant and relation,
+// the finding's failed, those --only left out skipped.
+bool write_check_junit(const std::string& path, const std::string& generator, const props::CheckOptions& options,
+                       const std::string& violation, double seconds, std::string& error) {
+  std::string name, file;
+  std::istringstream words(violation);
+  std::string keyword;
+  words >> keyword >> name >> file;
+  std::vector<JunitCase> cases;
+  std::vector<std::string> names = invariant_names();
+  for (const std::string& relation : props::relation_names()) names.push_back(relation);
+  for (const std::string& check : names) {
+    JunitCase c{"manifuzz.check." + generator, check};
+    c.skipped = !options.selection.wants(check);
+    if (check == name) c.failure_message = check + " violated", c.failure_text = "minimised case: " + file;
+    cases.push_back(c);
+  }
+  if (!name.empty() && std::find(names.begin(), names.end(), name) == names.end())
+    cases.push_back({"manifuzz.check." + generator, name, 0, false, name, "minimised case: " + file});
+  return write_junit(path, "manifuzz check " + generator + " --seed " + std::to_string(options.seed), cases,
+                     seconds, error);
+}
+
 }  // namespace
 
 
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family"},
+      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family", "--junit"},
       {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F] [--junit FILE])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
@@ -178,23 +199,37 @@ int check_command(const std::vector<std::string>& words) {
   const long long cores = std::max(1u, std::thread::hardware_concurrency());
   const auto jobs = parse_count(args->get("--jobs", "1"), 1, 4 * cores);
   if (!jobs) return usage("--jobs takes a whole number from 1 to " + std::to_string(4 * cores));
+  const std::string junit = args->get("--junit", "");
+  if (args->options.count("--junit") && !junit_writable(junit, error)) return usage(error);
+  const auto reported = [&](int status, const std::string& violation, double seconds) {
+    if (!junit.empty() && !write_check_junit(junit, args->get("--generator", "builtin"), options, violation, seconds, error)) {
+      std::cerr << "manifuzz check: " << error << "\n";
+      return kExitInputError;
+    }
+    return status;
+  };
   if (*jobs > 1) {
     // The out folder and the generator are tried once, before any job starts.
     if (!props::prepare_out_dir(options.out_dir, error) || !open_session(options.generator, options.call_timeout, error)) {
       std::cerr << "manifuzz check: " << error << "\n";
       return kExitInputError;
     }
-    return run_jobs(options, static_cast<int>(*jobs));
+    std::string violation;
+    long long cases = 0;
+    double seconds = 0;
+    const int status = run_jobs(options, static_cast<int>(*jobs), violation, cases, seconds);
+    return reported(status, violation, seconds);
   }
   const auto result = props::run_check(options, std::cerr, error);
   if (!result) {
     std::cerr << "manifuzz check: " << error << "\n";
     return kExitInputError;
   }
-  if (!result->finding) return result->interrupted ? kExitInterrupted : kExitClean;
+  if (!result->finding) return reported(result->interrupted ? kExitInterrupted : kExitClean, "", result->seconds);
   std::cerr << "minimised case (" << result->shrink_steps << " shrink steps):\n" << result->minimised_text;
-  std::printf("VIOLATION %s %s\n", result->finding->name.c_str(), result->case_path.c_str());
-  return kExitViolation;
+  const std::string violation = "VIOLATION " + result->finding->name + " " + result->case_path;
+  std::printf("%s\n", violation.c_str());
+  return reported(kExitViolation, violation, result->seconds);
 }
 
 }  // namespace mfz::cli

@@ -8,6 +8,7 @@
 
 #include "cli/arguments.h"
 #include "cli/program_files.h"
+#include "harness/junit_report.h"
 #include "fuzz_campaign.h"
 
 namespace mfz::cli {
@@ -31,7 +32,7 @@ std::string fuzzer_program() {
 int fuzz_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile"},
+      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile", "--junit"},
       {"--strict", "--quiet"}, error);
   if (!args) return fail(error + " (" + kUsage + ")");
   if (!args->positional.empty()) return fail("unexpected argument " + mfz::quoted(args->positional[0]) + " (" + kUsage + ")");
@@ -63,8 +64,20 @@ int fuzz_command(const std::vector<std::string>& words) {
   if (options.fuzzer.empty())
     return fail("no manifold_fuzzer beside this manifuzz: fuzzing needs the clang build (cmake --preset clang; "
                 "then build/clang/src/manifuzz fuzz), or MANIFUZZ_FUZZER naming the program");
+  const std::string junit = args->get("--junit", "");
+  if (args->options.count("--junit") && !junit_writable(junit, error)) return fail(error);
   const auto result = props::run_fuzz(options, std::cerr, std::cout, error);
   if (!result) return fail(error);
+  if (!junit.empty()) {
+    // One test case for the campaign, and one per distinct finding.
+    const std::string classname = "manifuzz.fuzz." + args->get("--generator", "builtin");
+    std::vector<JunitCase> cases = {{classname, "campaign", result->seconds}};
+    if (!result->findings.empty()) cases[0].failure_message = std::to_string(result->findings.size()) + " findings";
+    for (const props::FuzzFinding& f : result->findings)
+      cases.push_back({classname, f.name + " (" + f.kind + ")", f.after_seconds, false, f.name + " after " +
+                       std::to_string(static_cast<long long>(f.after_seconds)) + " s", f.case_path});
+    if (!write_junit(junit, "manifuzz fuzz", cases, result->seconds, error)) return fail(error);
+  }
   if (!result->findings.empty()) return kExitViolation;
   return result->interrupted ? kExitInterrupted : kExitClean;
 }

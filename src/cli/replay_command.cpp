@@ -8,6 +8,7 @@
 #include "case_property.h"
 #include "cli/arguments.h"
 #include "cli/program_files.h"
+#include "harness/junit_report.h"
 #include "harness/report.h"
 
 namespace mfz::cli {
@@ -55,10 +56,10 @@ void add_json(Json& json, const std::string& file, const props::CaseOutcome* o, 
 
 int replay_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile"}, {"--json", "--strict"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile", "--junit"}, {"--json", "--strict"}, error);
   if (!args || args->positional.empty()) {
     std::cerr << "manifuzz replay: " << (args ? "no case file given" : error)
-              << " (usage: manifuzz replay [--generator G] [--json] [--strict] [--profile P] FILE...)\n";
+              << " (usage: manifuzz replay [--generator G] [--json] [--strict] [--profile P] [--junit FILE] FILE...)\n";
     return kExitInputError;
   }
   std::unique_ptr<GeneratorSession> session = nullptr;
@@ -74,6 +75,12 @@ int replay_command(const std::vector<std::string>& words) {
     std::cerr << "manifuzz replay: " << error << "\n";
     return kExitInputError;
   }
+  const std::string junit = args->get("--junit", "");
+  if (args->options.count("--junit") && !junit_writable(junit, error)) {
+    std::cerr << "manifuzz replay: " << error << "\n";
+    return kExitInputError;
+  }
+  std::vector<JunitCase> junit_cases;
   const bool json_output = args->has("--json");
   Json json;
   json.begin_object().key("generator").value(session->name()).key("cases").begin_array();
@@ -99,6 +106,14 @@ int replay_command(const std::vector<std::string>& words) {
       if (!json_output) print_text(file, *run);
     }
     if (json_output) add_json(json, file, run ? &*run : nullptr, error);
+    JunitCase c{"manifuzz.replay." + session->name(), file};
+    if (!run) c.failure_message = "input error: " + error;
+    else if (run->finding) c.failure_message = run->finding->name + ": " + run->finding->detail, c.failure_text = file;
+    junit_cases.push_back(c);
+  }
+  if (!junit.empty() && !write_junit(junit, "manifuzz replay", junit_cases, 0, error)) {
+    std::cerr << "manifuzz replay: " << error << "\n";
+    outcome.worsen(kExitInputError);
   }
   json.end_array().end_object();
   if (json_output) std::cout << json.str() << "\n";

@@ -15,8 +15,8 @@ struct JunitCase {
   double seconds = 0;
   bool skipped = false;
   /// A failure: its one-line message and its longer text (the case file's path, ...).
-  std::optional<std::string> failure_message;
-  std::string failure_text;
+  std::optional<std::string> failure_message = std::nullopt;
+  std::string failure_text = {};
 };
 
 /// Writes `cases` as one test suite `suite` to `path`; false and a one-line
