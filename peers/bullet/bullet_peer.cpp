@@ -25,8 +25,9 @@
 //   - Bullet's depth is signed, negative when overlapping: p_i = depth.
 //   - The collision margin (Bullet's default 0.04 for a shape of unit size)
 //     is 0.04 L; the breaking threshold is Bullet's relative one, 0.02 of the
-//     shape's angular motion disc (at most 0.019 L): contacts up to it before
-//     touching are reported, hence the profile's margin=0.02.
+//     shape's angular motion disc (at most 0.019 L for a shape about the
+//     middle of its bounding box, as each hull is handed over): contacts up
+//     to it before touching are reported, hence the profile's margin=0.02.
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/CollisionShapes/btConvexPolyhedron.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -66,14 +67,38 @@ btTransform to_bt(const mfz_pose& p) {
   return btTransform(q, to_bt(p.position));
 }
 
-/// The harness's hull as Bullet's polyhedron: its vertices and faces, each
-/// face's plane as Bullet stores it (n . x + d = 0); initialize() finds the
-/// unique edge directions and the inner sphere and box Bullet tests against.
-void fill_polyhedron(const mfz_hull& h, btConvexPolyhedron& poly) {
+/// The middle of a hull's bounding box: Bullet's shapes are built about it
+/// (a Bullet user centres a shape; the breaking threshold, 0.02 of the
+/// bounding sphere about the local origin, assumes it).
+mfz_vec3 box_centre(const mfz_hull& h) {
+  mfz_vec3 low = h.vertices[0], high = h.vertices[0];
+  for (int i = 1; i < h.vertex_count; ++i) {
+    const mfz_vec3& v = h.vertices[i];
+    low = {std::min(low.x, v.x), std::min(low.y, v.y), std::min(low.z, v.z)};
+    high = {std::max(high.x, v.x), std::max(high.y, v.y), std::max(high.z, v.z)};
+  }
+  return {0.5 * (low.x + high.x), 0.5 * (low.y + high.y), 0.5 * (low.z + high.z)};
+}
+
+/// The pose of a hull moved to be about `centre`: world = R (local' + c) + p.
+btTransform centred_pose(const mfz_pose& p, const mfz_vec3& centre) {
+  btTransform t = to_bt(p);
+  t.setOrigin(t(to_bt(centre)));
+  return t;
+}
+
+/// The harness's hull as Bullet's polyhedron, about `centre`: its vertices
+/// and faces, each face's plane as Bullet stores it (n . x + d = 0);
+/// initialize() finds the unique edge directions and the inner sphere and
+/// box Bullet tests against.
+void fill_polyhedron(const mfz_hull& h, const mfz_vec3& centre, btConvexPolyhedron& poly) {
   poly.m_vertices.resize(0);
   poly.m_faces.resize(0);
   poly.m_uniqueEdges.resize(0);
-  for (int i = 0; i < h.vertex_count; ++i) poly.m_vertices.push_back(to_bt(h.vertices[i]));
+  for (int i = 0; i < h.vertex_count; ++i) {
+    const mfz_vec3& v = h.vertices[i];
+    poly.m_vertices.push_back(to_bt(mfz_vec3{v.x - centre.x, v.y - centre.y, v.z - centre.z}));
+  }
   for (int f = 0; f < h.face_count; ++f) {
     btFace face;
     for (int k = h.face_offsets[f]; k < h.face_offsets[f + 1]; ++k) face.m_indices.push_back(h.face_vertices[k]);
@@ -179,15 +204,20 @@ MFZ_PEER_EXPORT const char* mfz_generator_profile(void) { return kProfile; }
 
 MFZ_PEER_EXPORT int32_t mfz_generate(const mfz_hull* a, const mfz_pose* pose_a, const mfz_hull* b,
                                      const mfz_pose* pose_b, mfz_manifold* out) {
-  const btTransform ta = to_bt(*pose_a), tb = to_bt(*pose_b);
+  const mfz_vec3 centre_a = box_centre(*a), centre_b = box_centre(*b);
+  const btTransform ta = centred_pose(*pose_a, centre_a), tb = centred_pose(*pose_b, centre_b);
   const btScalar margin = btScalar(kMarginPerL * peer::case_scale(*a, *b));
   btConvexPolyhedron poly_a, poly_b;
-  fill_polyhedron(*a, poly_a);
-  fill_polyhedron(*b, poly_b);
+  fill_polyhedron(*a, centre_a, poly_a);
+  fill_polyhedron(*b, centre_b, poly_b);
   btConvexHullShape shape_a(&poly_a.m_vertices[0].x(), poly_a.m_vertices.size(), sizeof(btVector3));
   btConvexHullShape shape_b(&poly_b.m_vertices[0].x(), poly_b.m_vertices.size(), sizeof(btVector3));
+  // setMargin leaves the cached bounding box (made with the default 0.04)
+  // as it was: the breaking threshold is read from it, so it is made again.
   shape_a.setMargin(margin);
   shape_b.setMargin(margin);
+  shape_a.recalcLocalAabb();
+  shape_b.recalcLocalAabb();
   const btScalar threshold = breaking_threshold(shape_a, shape_b);
 
   btVector3 normal_on_b(0, 0, 1);
