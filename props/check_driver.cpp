@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <sstream>
 
@@ -158,6 +159,18 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
                               ? tol::kProfileFarthestFrame / (tol::kWorldUlps * options.selection.profile.precision_epsilon)
                               : std::numeric_limits<double>::infinity();
   const auto gen = any_case(farthest, options.hull_families);
+  // The double build a float finding must fail too, under its own profile.
+  std::unique_ptr<GeneratorSession> confirmer;
+  Selection confirm_selection = options.selection;
+  if (options.confirm_with) {
+    confirmer = open_session(*options.confirm_with, options.call_timeout, error);
+    if (!confirmer) return std::nullopt;
+    const auto own = profile_in_force(confirmer->declared_profile(), std::nullopt, error);
+    if (!own) return std::nullopt;
+    confirm_selection.profile = *own;
+    log << "manifuzz check: each finding is confirmed against " << confirmer->name() << " (profile " << own->text()
+        << "); one it does not make is rounding, counted and passed over\n";
+  }
   rc::Random random(options.seed);
   Statistics stats;
   CheckResult result;
@@ -179,6 +192,15 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
     }
     ++result.cases;
     record(stats, generated, outcome);
+    if (outcome.finding && confirmer) {
+      const CaseOutcome again = check_case(generated.file, *confirmer, confirm_selection);
+      if (!again.invalid && !(again.finding && same_failure(*outcome.finding, *again.finding))) {
+        ++result.rounding_only;
+        log << "  rounding only: " << outcome.finding->name << " at case " << index << " ("
+            << outcome.finding->detail << "), which " << confirmer->name() << " does not make\n";
+        continue;
+      }
+    }
     if (outcome.finding) {
       Finding finding = *outcome.finding;
       log << "found " << finding.name << " at case " << index << ": " << finding.detail << "\nshrinking...\n";
@@ -212,7 +234,9 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
   if (result.interrupted) log << "manifuzz check: interrupted; the summary so far:\n";
   log << "manifuzz check: " << result.cases << " cases in " << std::setprecision(3) << result.seconds << " s ("
       << static_cast<long long>(result.cases / std::max(result.seconds, 1e-9)) << " cases/s), " << result.invalid
-      << " invalid inputs discarded\n";
+      << " invalid inputs discarded";
+  if (confirmer) log << ", " << result.rounding_only << " findings of rounding only passed over";
+  log << "\n";
   stats.print(log, result.cases);
   return result;
 }

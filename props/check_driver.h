@@ -26,11 +26,17 @@ struct CheckOptions {
   std::optional<std::string> profile_override;
   /// --family: the hull families drawn (empty: every family).
   std::vector<std::string> hull_families;
+  /// --confirm-with: the same logic in double (a float peer's double build).
+  /// A finding it does not make too is rounding, not logic: counted, logged,
+  /// and the run goes on.
+  std::optional<std::string> confirm_with;
 };
 
 /// What a run found. `finding` is empty when nothing was.
 struct CheckResult {
   long long cases = 0, invalid = 0, oracle_disagreements = 0;
+  /// Findings the --confirm-with generator did not make: rounding only.
+  long long rounding_only = 0;
   double seconds = 0;
   std::optional<Finding> finding;
   long long found_at_case = -1;

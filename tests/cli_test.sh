@@ -220,6 +220,16 @@ if [ -f "$plugin_dir/libmanifuzz_peer_ode_box.so" ]; then
   expect 1 'VIOLATION refused ' -- "$manifuzz" replay --generator ode-box "$source_dir/corpus/tetrahedron_tip_in_face.case"
 fi
 
+# --confirm-with: a float variant's rounding (flagged under a double
+# profile) is passed over when the same logic in double does not make it;
+# a broken float variant's finding, which the broken double one makes too, stops the run.
+if [ -f "$plugin_dir/libmfz_mutant_float_precision.so" ]; then
+  expect 0 '[1-9][0-9]* findings of rounding only passed over' -- "$manifuzz" check --generator "$plugin_dir/libmfz_mutant_float_precision.so" \
+    --profile precision=double --confirm-with builtin --cases 400 --seed 3 --out "$scratch/confirm" --only on-surface
+  expect 1 'VIOLATION ' -- "$manifuzz" check --generator "$plugin_dir/libmfz_mutant_float_side_clip_skipped.so" \
+    --confirm-with "$plugin_dir/libmfz_mutant_side_clip_skipped.so" --cases 2000 --seed 3 --out "$scratch/confirm" --quiet
+fi
+
 # diff: a generator against itself agrees; against the tutorial, disagreements
 # with their minimised cases; case files compared one by one.
 expect 0 '0 differ where both are right' -- "$manifuzz" diff --generator builtin --against "$plugin_dir/libmanifuzz_clipping.so" --cases 100 --seed 3 --out "$scratch/diff" --quiet

@@ -148,11 +148,11 @@ bool write_check_junit(const std::string& path, const std::string& generator, co
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family", "--junit"},
+      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family", "--junit", "--confirm-with"},
       {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F] [--junit FILE])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F] [--junit FILE] [--confirm-with G2])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
@@ -193,6 +193,7 @@ int check_command(const std::vector<std::string>& words) {
     if (!families) return usage(error);
     options.hull_families = *families;
   }
+  if (args->options.count("--confirm-with")) options.confirm_with = resolve_generator(args->get("--confirm-with", ""));
   if (args->has("--quiet")) options.progress_every = 0;
   if (args->has("--strict")) options.selection.level = props::Level::strict;
   options.profile_override = profile_override(*args);
