@@ -158,13 +158,6 @@ class WithoutMarginResult final : public btDiscreteCollisionDetectorInterface::R
   btScalar margins_;
 };
 
-class NoResult final : public btDiscreteCollisionDetectorInterface::Result {
- public:
-  void setShapeIdentifiersA(int, int) override {}
-  void setShapeIdentifiersB(int, int) override {}
-  void addContactPoint(const btVector3&, const btVector3&, btScalar) override {}
-};
-
 /// Bullet's relative breaking threshold: 0.02 of the smaller angular motion
 /// disc (the bounding sphere about the local origin, margin included).
 btScalar breaking_threshold(const btConvexHullShape& a, const btConvexHullShape& b) {
@@ -223,9 +216,11 @@ MFZ_PEER_EXPORT int32_t mfz_generate(const mfz_hull* a, const mfz_pose* pose_a, 
   btVector3 normal_on_b(0, 0, 1);
   btScalar min_distance = btScalar(-1e30);
   bool colliding = false;
+  ManifoldResult result(ta, tb, threshold);
   if (BULLET_PEER_SAT) {
-    NoResult ignored;
-    colliding = btPolyhedralContactClipping::findSeparatingAxis(poly_a, poly_b, ta, tb, normal_on_b, ignored);
+    // Given the manifold, as btConvexConvexAlgorithm gives it: on an edge
+    // axis findSeparatingAxis adds the edges' closest points there itself.
+    colliding = btPolyhedralContactClipping::findSeparatingAxis(poly_a, poly_b, ta, tb, normal_on_b, result);
   } else {
     btVoronoiSimplexSolver simplex;
     btGjkEpaPenetrationDepthSolver epa;
@@ -241,7 +236,6 @@ MFZ_PEER_EXPORT int32_t mfz_generate(const mfz_hull* a, const mfz_pose* pose_a, 
     normal_on_b = without_margin.normal_on_b_;
     min_distance = without_margin.distance_;
   }
-  ManifoldResult result(ta, tb, threshold);
   if (colliding) {
     btVertexArray clipped_1, clipped_2;
     btPolyhedralContactClipping::clipHullAgainstHull(normal_on_b, poly_a, poly_b, ta, tb, min_distance - threshold,
