@@ -352,7 +352,9 @@ void print_diff_summary(const DiffResult& r, std::ostream& out) {
   out << "  " << std::left << std::setw(16) << "disagreement" << std::right << std::setw(8) << "cases" << std::setw(8)
       << "first" << std::setw(8) << "second" << std::setw(8) << "both" << std::setw(9) << "neither"
       << "   minimised case\n";
-  for (const auto& [kind, t] : r.kinds) {
+  for (const auto& row : r.kinds) {
+    const std::string& kind = row.first;
+    const KindTally& t = row.second;
     const auto n = [&](const char* who) {
       const auto found = t.sides_with.find(who);
       return found == t.sides_with.end() ? 0LL : found->second;

@@ -11,6 +11,7 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <memory>
 #include <ostream>
 #include <set>
 #include <sstream>
@@ -256,8 +257,10 @@ std::string artefact_kind(const std::string& name) {
 
 class Campaign {
  public:
-  Campaign(const FuzzOptions& o, GeneratorSession& g, const fs::path& work, std::ostream& log, std::ostream& out)
-      : options_(o), generator_(g), work_(work), log_(log), findings_out_(out), started_(Clock::now()) {}
+  Campaign(const FuzzOptions& o, GeneratorSession& g, GeneratorSession* confirmer, const Profile& confirmer_profile,
+           const fs::path& work, std::ostream& log, std::ostream& out)
+      : options_(o), generator_(g), confirmer_(confirmer), confirmer_profile_(confirmer_profile), work_(work), log_(log),
+        findings_out_(out), started_(Clock::now()) {}
 
   // Looks at libFuzzer's new artefacts; a finding not seen before is
   // minimised and written.
@@ -300,6 +303,18 @@ class Campaign {
     if (const auto known = index_.find(key); known != index_.end()) {
       ++result.findings[known->second].artefacts;
       return;
+    }
+    if (rounding_.count(key)) return;
+    // The same logic in double must fail alike, or this is rounding.
+    if (finding && confirmer_) {
+      const CaseOutcome again = check_case(decoded->file, *confirmer_, {{}, options_.level, confirmer_profile_, true});
+      if (!again.invalid && !(again.finding && same_failure(*finding, *again.finding))) {
+        rounding_.insert(key);
+        ++result.rounding_only;
+        log_ << "rounding only: " << key << " after " << static_cast<long long>(elapsed) << " s ("
+             << finding->detail << "), which " << confirmer_->name() << " does not make\n";
+        return;
+      }
     }
     CaseFile smallest = decoded->file;
     std::string minimised = "then minimised";
@@ -366,6 +381,9 @@ class Campaign {
   // the profile in force, from the command line.
   Selection selection() const { return {{}, options_.level, options_.profile, true}; }
   GeneratorSession& generator_;
+  GeneratorSession* confirmer_;
+  Profile confirmer_profile_;
+  std::set<std::string> rounding_;
   fs::path work_;
   std::ostream& log_;
   std::ostream& findings_out_;
@@ -408,7 +426,9 @@ void print_summary(std::ostream& log, const FuzzOptions& o, const FuzzResult& r)
       << static_cast<long long>(r.execs / std::max(r.seconds, 1e-9)) << " exec/s on " << o.jobs << " job"
       << (o.jobs > 1 ? "s" : "") << "), coverage " << r.coverage << " ft " << r.features << ", corpus "
       << r.corpus_inputs << " inputs (" << r.corpus_added << " new) in " << o.corpus_dir << ", "
-      << r.findings.size() << " distinct finding" << (r.findings.size() == 1 ? "" : "s") << "\n";
+      << r.findings.size() << " distinct finding" << (r.findings.size() == 1 ? "" : "s");
+  if (o.confirm_with) log << ", " << r.rounding_only << " of rounding only passed over";
+  log << "\n";
   for (const FuzzFinding& f : r.findings)
     log << "  " << f.name << " (" << f.kind << "): " << f.artefacts << " artefact" << (f.artefacts == 1 ? "" : "s")
         << ", first after " << static_cast<long long>(f.after_seconds) << " s: " << f.case_path << "\n";
@@ -463,7 +483,17 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
   std::set<std::string> known = corpus_names(options.corpus_dir);
   result.corpus_inputs = static_cast<int>(known.size());
   log << "  resuming from " << known.size() << " inputs in " << options.corpus_dir << "\n";
-  Campaign campaign(options, *generator, work, log, findings_out);
+  std::unique_ptr<GeneratorSession> confirmer;
+  Profile confirmer_profile;
+  if (options.confirm_with) {
+    confirmer = open_session(*options.confirm_with, options.call_timeout, error);
+    if (!confirmer) return std::nullopt;
+    const auto own = profile_in_force(confirmer->declared_profile(), std::nullopt, error);
+    if (!own) return std::nullopt;
+    confirmer_profile = *own;
+    log << "  each finding is confirmed against " << confirmer->name() << "; one it does not make is rounding\n";
+  }
+  Campaign campaign(options, *generator, confirmer.get(), confirmer_profile, work, log, findings_out);
   const auto started = Clock::now();
   double last_sync = 0, last_progress = 0;
   std::string first_error;

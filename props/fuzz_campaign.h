@@ -29,6 +29,9 @@ struct FuzzOptions {
   /// profile in force goes to the fuzzer whole, as MANIFUZZ_PROFILE.
   std::optional<std::string> profile_override;
   Profile profile = {};  ///< the profile in force, set by run_fuzz
+  /// --confirm-with: the same logic in double; a finding it does not make
+  /// too is rounding, counted and not written.
+  std::optional<std::string> confirm_with;
 };
 
 /// One distinct finding: a check and the kind of case it failed on.
@@ -47,6 +50,7 @@ struct FuzzResult {
   int corpus_inputs = 0, corpus_added = 0;
   double seconds = 0;
   std::vector<FuzzFinding> findings;
+  long long rounding_only = 0;  ///< distinct findings --confirm-with did not make
   bool interrupted = false;
 };
 

@@ -32,7 +32,7 @@ std::string fuzzer_program() {
 int fuzz_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile", "--junit"},
+      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile", "--junit", "--confirm-with"},
       {"--strict", "--quiet"}, error);
   if (!args) return fail(error + " (" + kUsage + ")");
   if (!args->positional.empty()) return fail("unexpected argument " + mfz::quoted(args->positional[0]) + " (" + kUsage + ")");
@@ -60,6 +60,7 @@ int fuzz_command(const std::vector<std::string>& words) {
   if (args->has("--strict")) options.level = props::Level::strict;
   if (args->has("--quiet")) options.progress_every = 0;
   options.profile_override = profile_override(*args);
+  if (args->options.count("--confirm-with")) options.confirm_with = resolve_generator(args->get("--confirm-with", ""));
   options.fuzzer = fuzzer_program();
   if (options.fuzzer.empty())
     return fail("no manifold_fuzzer beside this manifuzz: fuzzing needs the clang build (cmake --preset clang; "
