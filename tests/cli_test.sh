@@ -171,10 +171,12 @@ expect 2 'cannot write into --out' -- bash -c "ulimit -f 0; exec '$manifuzz' che
 check_that "a full disk leaves the earlier case as it was" test -n "$before" -a "$before" = "$(cat "$kept")"
 check_that "a full disk leaves no empty case file" test -z "$(find "$scratch/keep" -name '*.case' -empty)"
 
-# --seconds covers shrinking.
+# --seconds covers shrinking: without it the two shrinking stages may take
+# 180 s. The slack covers the case under way at the deadline in the slowest
+# build (ASan, a loaded machine: 12 s once).
 start=$(date +%s)
 "$manifuzz" check --generator "$plugin_dir/libmanifuzz_tutorial.so" --seconds 2 --seed 1 --out "$scratch/sec" --quiet >/dev/null 2>&1
-check_that "check --seconds 2 ends within 6 s, shrinking included ($(( $(date +%s) - start )) s)" test $(( $(date +%s) - start )) -le 6
+check_that "check --seconds 2 ends within 30 s, shrinking included ($(( $(date +%s) - start )) s)" test $(( $(date +%s) - start )) -le 30
 
 # A relation finding replays as a finding.
 "$manifuzz" check --generator "$plugin_dir/libmfz_mutant_swapped_pair.so" --cases 300 --seed 3 --out "$scratch/rel" --quiet >/dev/null 2>&1
