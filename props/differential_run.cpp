@@ -344,13 +344,18 @@ std::optional<DiffResult> run_diff(const DiffOptions& options, std::ostream& log
 }
 
 void print_diff_summary(const DiffResult& r, std::ostream& out) {
+  long long disagreeing = 0;
+  for (const auto& row : r.kinds) disagreeing += row.second.cases;
   out << "manifuzz diff: " << r.cases << " cases in " << std::setprecision(3) << r.seconds << " s ("
-      << static_cast<long long>(r.cases / std::max(r.seconds, 1e-9)) << " cases/s), " << r.agreeing << " agree, "
-      << r.ties << " differ where both are right, "
-      << r.invalid << " invalid inputs discarded\n"
-      << "  first: " << r.first_name << ", second: " << r.second_name << "\n";
-  out << "  " << std::left << std::setw(16) << "disagreement" << std::right << std::setw(8) << "cases" << std::setw(8)
-      << "first" << std::setw(8) << "second" << std::setw(8) << "both" << std::setw(9) << "neither"
+      << static_cast<long long>(r.cases / std::max(r.seconds, 1e-9)) << " cases/s), " << r.invalid
+      << " invalid inputs discarded\n"
+      << "  first:  " << r.first_name << " (profile " << r.first_profile.text() << ")\n"
+      << "  second: " << r.second_name << " (profile " << r.second_profile.text() << ")\n"
+      << "  " << r.agreeing << " agree; " << r.ties << " differ where the oracles confirm both (a tie); " << disagreeing
+      << " disagree:\n";
+  if (r.kinds.empty()) return;
+  out << "  " << std::left << std::setw(16) << "disagreement" << std::right << std::setw(7) << "cases"
+      << "   oracles side with:" << std::setw(7) << "first" << std::setw(8) << "second" << std::setw(9) << "neither"
       << "   minimised case\n";
   for (const auto& row : r.kinds) {
     const std::string& kind = row.first;
@@ -359,12 +364,9 @@ void print_diff_summary(const DiffResult& r, std::ostream& out) {
       const auto found = t.sides_with.find(who);
       return found == t.sides_with.end() ? 0LL : found->second;
     };
-    out << "  " << std::left << std::setw(16) << kind << std::right << std::setw(8) << t.cases << std::setw(8)
-        << n(kFirst) << std::setw(8) << n(kSecond) << std::setw(8) << n("both") << std::setw(9) << n("neither") << "   "
-        << t.example_path << "\n";
+    out << "  " << std::left << std::setw(16) << kind << std::right << std::setw(7) << t.cases << std::setw(26)
+        << n(kFirst) << std::setw(8) << n(kSecond) << std::setw(9) << n("neither") << "   " << t.example_path << "\n";
   }
-  if (r.kinds.empty()) out << "  (no disagreement)\n";
-  out << "  first/second/both/neither: whose answer the oracles confirm\n";
 }
 
 }  // namespace mfz::props
