@@ -234,8 +234,8 @@ fi
 
 # diff: a generator against itself agrees; against the tutorial, disagreements
 # with their minimised cases; case files compared one by one.
-expect 0 '0 differ where both are right' -- "$manifuzz" diff --generator builtin --against "$plugin_dir/libmanifuzz_clipping.so" --cases 100 --seed 3 --out "$scratch/diff" --quiet
-expect 1 'disagreement +cases +first +second' -- "$manifuzz" diff --generator builtin --against tutorial --cases 300 --seed 3 --out "$scratch/diff" --quiet
+expect 0 '100 agree; 0 differ where the oracles confirm both' -- "$manifuzz" diff --generator builtin --against "$plugin_dir/libmanifuzz_clipping.so" --cases 100 --seed 3 --out "$scratch/diff" --quiet
+expect 1 'disagreement +cases +oracles side with: +first +second' -- "$manifuzz" diff --generator builtin --against tutorial --cases 300 --seed 3 --out "$scratch/diff" --quiet
 expect 0 'agree .*box_on_box.case' -- "$manifuzz" diff --generator builtin --against tutorial "$good"
 expect_one_line_error 'give both --generator and --against' -- "$manifuzz" diff --generator builtin --cases 5
 tutorial_case=$(ls "$scratch"/diff/diff-*.case | head -1)
