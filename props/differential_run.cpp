@@ -149,9 +149,10 @@ std::optional<Disagreement> compare_normal(const Scene& scene, const OracleAnswe
   const Vec3 n1 = vec(m1.normal).normalized(), n2 = vec(m2.normal).normalized();
   const double angle = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
   if (angle <= normal_allowance(s1.profile) + normal_allowance(s2.profile)) return std::nullopt;
-  // Where the geometry does not decide (two axes of least overlap), either
-  // normal is right; the depth comparison has already held.
-  if (o.axis_tie || o.ties.any()) return std::nullopt;
+  // Where the geometry does not decide the direction (two axes of least
+  // overlap, or the reverse of the best), either normal is right; the depth
+  // comparison has already held.
+  if (o.ties.direction) return std::nullopt;
   const double exact = o.exact.signed_depth;
   const auto right = [](const Verdict& v) { return passes(v, {"normal-realises-depth", "normal-agrees-with-epa"}); };
   return Disagreement{"normal", format("%.3g rad apart", angle) + format("; overlap along the first %.6g, the second %.6g",
