@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds and runs every test: g++ (the default preset), clang++ (with the
-# libFuzzer targets and `manifuzz fuzz`), and g++ with ASan + UBSan; then
+# libFuzzer targets and `manifuzz fuzz`), and clang++ with ASan + UBSan; then
 # ClusterFuzzLite's build.sh with ASan + UBSan, each target run for a few
 # seconds. Properties run a bounded number of cases here. The clang preset
 # leaves out the CLI and mutation tests, which the g++ build runs on the same
