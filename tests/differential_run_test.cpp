@@ -55,40 +55,38 @@ TEST(Diff, AGeneratorAgreesWithItself) {
   }
 }
 
-TEST(Diff, ACollisionMissedNearTouchingIsAColliding) {
-  // The slab and the cube overlap by 1e-7: the broken side calls it apart.
-  CaseFile c = corpus_case("box_on_box");
-  c.pose_b.position.z() = 1 - 1e-7;
-  const auto d = against_builtin("near_touching", c);
+// Each kind fires on a generator broken that way, and the oracles side with
+// the built-in.
+struct BrokenWay {
+  const char* mutant;
+  const char* corpus_case;
+  const char* kind;
+};
+
+class DiffKind : public ::testing::TestWithParam<BrokenWay> {};
+
+TEST_P(DiffKind, FiresOnAGeneratorBrokenThatWayAndSidesWithTheBuiltin) {
+  CaseFile c = corpus_case(GetParam().corpus_case);
+  // The near-touching mutant calls an overlap of 1e-7 apart.
+  if (std::string(GetParam().mutant) == "near_touching") c.pose_b.position.z() = 1 - 1e-7;
+  const auto d = against_builtin(GetParam().mutant, c);
   SKIP_UNLESS_BUILT(d);
   ASSERT_TRUE(d);
-  EXPECT_EQ(d->kind, "colliding");
+  EXPECT_EQ(d->kind, GetParam().kind);
   EXPECT_EQ(d->sides_with, "first");
 }
 
-TEST(Diff, AFaceAxisInPlaceOfTheEdgeAxisIsADepth) {
-  const auto d = against_builtin("edge_axes_skipped", corpus_case("edge_crosses_edge"));
-  SKIP_UNLESS_BUILT(d);
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->kind, "depth");
-  EXPECT_EQ(d->sides_with, "first");
-}
-
-TEST(Diff, AReversedNormalIsANormal) {
-  const auto d = against_builtin("normal_sign", corpus_case("box_on_box"));
-  SKIP_UNLESS_BUILT(d);
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->kind, "normal");
-  EXPECT_EQ(d->sides_with, "first");
-}
-
-TEST(Diff, OneContactForAFaceOnFaceIsAContactRegion) {
-  const auto d = against_builtin("deepest_only", corpus_case("box_turned_45_on_box"));
-  SKIP_UNLESS_BUILT(d);
-  ASSERT_TRUE(d);
-  EXPECT_EQ(d->kind, "contact-region");
-  EXPECT_EQ(d->sides_with, "first");
-}
+INSTANTIATE_TEST_SUITE_P(Diff, DiffKind,
+                         ::testing::Values(BrokenWay{"near_touching", "box_on_box", "colliding"},
+                                           BrokenWay{"edge_axes_skipped", "edge_crosses_edge", "depth"},
+                                           BrokenWay{"normal_sign", "box_on_box", "normal"},
+                                           BrokenWay{"deepest_only", "box_turned_45_on_box", "contact-region"}),
+                         [](const auto& info) {
+                           std::string name = info.param.kind;
+                           for (char& ch : name)
+                             if (ch == '-') ch = '_';
+                           return name;
+                         });
 
 // A reducer keeps four of the eight corners: under its max-contacts its
 // points need only lie inside the full manifold's.

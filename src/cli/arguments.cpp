@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 namespace mfz::cli {
 
@@ -60,6 +61,27 @@ std::optional<double> parse_seconds(const std::string& text) {
   const double v = std::strtod(text.c_str(), &end);
   if (text.empty() || *end != '\0' || !std::isfinite(v) || v < 0) return std::nullopt;
   return v;
+}
+
+std::optional<RunBudget> run_budget(const Arguments& args, long long default_cases, std::string& error) {
+  RunBudget budget;
+  if (args.options.count("--cases")) {
+    budget.cases = parse_count(args.get("--cases", ""), 1, 1LL << 50);
+    if (!budget.cases) return error = "--cases takes a whole number >= 1", std::nullopt;
+  }
+  if (args.options.count("--seconds")) {
+    budget.seconds = parse_seconds(args.get("--seconds", ""));
+    if (!budget.seconds) return error = "--seconds takes a number >= 0", std::nullopt;
+  }
+  if (!budget.cases && !budget.seconds) budget.cases = default_cases;
+  if (args.options.count("--seed")) {
+    const auto seed = parse_count(args.get("--seed", ""), 0, (1LL << 62));
+    if (!seed) return error = "--seed takes a whole number >= 0", std::nullopt;
+    budget.seed = static_cast<uint64_t>(*seed);
+  } else {
+    budget.seed = std::random_device{}() % 1000000000;
+  }
+  return budget;
 }
 
 bool junit_writable(const std::string& path, std::string& error) {

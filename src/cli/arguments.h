@@ -2,6 +2,7 @@
 /// \file
 /// The command line's small argument parser: `--name value`, `--flag`, and
 /// positional words, with a one-line error for anything else.
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -50,6 +51,16 @@ bool apply_profile(const Arguments& args, const GeneratorSession& session, props
                    std::string& error);
 /// --profile's text, when given.
 std::optional<std::string> profile_override(const Arguments& args);
+
+/// A run's budget and stream: --cases N, --seconds T (without either,
+/// `default_cases`), --seed S (without it, one of the run's own choosing).
+struct RunBudget {
+  std::optional<long long> cases;
+  std::optional<double> seconds;
+  uint64_t seed = 0;
+};
+/// nullopt and a one-line `error` for a value out of range.
+std::optional<RunBudget> run_budget(const Arguments& args, long long default_cases, std::string& error);
 
 /// Whether `path` can be written (--junit is tried before a run, so that a
 /// report is never lost to it after the run); false and a one-line `error`.

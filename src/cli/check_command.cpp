@@ -160,22 +160,11 @@ int check_command(const std::vector<std::string>& words) {
   props::CheckOptions options;
   options.generator = resolve_generator(args->get("--generator", "builtin"));
   options.out_dir = args->get("--out", "failures");
-  if (args->options.count("--cases")) {
-    options.cases = parse_count(args->get("--cases", ""), 1, 1LL << 50);
-    if (!options.cases) return usage("--cases takes a whole number >= 1");
-  }
-  if (args->options.count("--seconds")) {
-    options.seconds = parse_seconds(args->get("--seconds", ""));
-    if (!options.seconds) return usage("--seconds takes a number >= 0");
-  }
-  if (!options.cases && !options.seconds) options.cases = kDefaultCases;
-  if (args->options.count("--seed")) {
-    const auto seed = parse_count(args->get("--seed", ""), 0, (1LL << 62));
-    if (!seed) return usage("--seed takes a whole number >= 0");
-    options.seed = static_cast<uint64_t>(*seed);
-  } else {
-    options.seed = std::random_device{}() % 1000000000;
-  }
+  const auto budget = run_budget(*args, kDefaultCases, error);
+  if (!budget) return usage(error);
+  options.cases = budget->cases;
+  options.seconds = budget->seconds;
+  options.seed = budget->seed;
   if (const auto timeout = call_timeout(*args, error)) options.call_timeout = *timeout;
   else return usage(error);
   if (args->options.count("--only")) {

@@ -89,22 +89,11 @@ int diff_command(const std::vector<std::string>& words) {
   options.generator = resolve_generator(args->get("--generator", ""));
   options.against = resolve_generator(args->get("--against", ""));
   options.out_dir = args->get("--out", "failures");
-  if (args->options.count("--cases")) {
-    options.cases = parse_count(args->get("--cases", ""), 1, 1LL << 50);
-    if (!options.cases) return fail("--cases takes a whole number >= 1");
-  }
-  if (args->options.count("--seconds")) {
-    options.seconds = parse_seconds(args->get("--seconds", ""));
-    if (!options.seconds) return fail("--seconds takes a number >= 0");
-  }
-  if (!options.cases && !options.seconds) options.cases = kDefaultCases;
-  if (args->options.count("--seed")) {
-    const auto seed = parse_count(args->get("--seed", ""), 0, (1LL << 62));
-    if (!seed) return fail("--seed takes a whole number >= 0");
-    options.seed = static_cast<uint64_t>(*seed);
-  } else {
-    options.seed = std::random_device{}() % 1000000000;
-  }
+  const auto budget = run_budget(*args, kDefaultCases, error);
+  if (!budget) return fail(error);
+  options.cases = budget->cases;
+  options.seconds = budget->seconds;
+  options.seed = budget->seed;
   if (args->options.count("--family")) {
     const auto families = props::hull_families_named(args->get("--family", ""), error);
     if (!families) return fail(error);
