@@ -78,29 +78,6 @@ double farthest_outside(const std::vector<Eigen::Vector2d>& points, const std::v
   return worst;
 }
 
-/// The area of the convex hull of `points` (Andrew's monotone chain).
-double hull_area(std::vector<Eigen::Vector2d> points) {
-  if (points.size() < 3) return 0;
-  std::sort(points.begin(), points.end(),
-            [](const auto& p, const auto& q) { return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y()); });
-  const auto turn = [](const Eigen::Vector2d& o, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-    return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-  };
-  std::vector<Eigen::Vector2d> hull(2 * points.size());
-  size_t k = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    while (k >= 2 && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  for (size_t i = points.size() - 1, lower = k + 1; i-- > 0;) {
-    while (k >= lower && turn(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
-    hull[k++] = points[i];
-  }
-  double twice = 0;
-  for (size_t i = 0; i + 1 < k; ++i) twice += hull[i].x() * hull[i + 1].y() - hull[i + 1].x() * hull[i].y();
-  return 0.5 * std::abs(twice);
-}
-
 /// Whether a side's own verdict (under its own profile) passes the named
 /// checks: the oracles confirm its answer there.
 bool passes(const Verdict& v, std::initializer_list<const char*> names) {
@@ -183,11 +160,11 @@ std::optional<Disagreement> compare_region(const Scene& scene, const OracleAnswe
   const double area = scene.scale * scene.scale;
   return Disagreement{"contact-region",
                       format("%g and %g contacts, areas %.3g L^2", m1.contact_count, m2.contact_count,
-                             hull_area(p1) / area) +
+                             convex_hull_area_2d(p1) / area) +
                           format(" and %.3g L^2; the first's reach %.3g L outside the second's hull, the second's %.3g L "
                                  "outside the first's",
-                                 hull_area(p2) / area, first_outside / scene.scale, second_outside / scene.scale) +
-                          format("; the region's area %.3g L^2", region.empty ? 0.0 : hull_area(region.corners) / area),
+                                 convex_hull_area_2d(p2) / area, first_outside / scene.scale, second_outside / scene.scale) +
+                          format("; the region's area %.3g L^2", region.empty ? 0.0 : convex_hull_area_2d(region.corners) / area),
                       sides_with(right(v1), right(v2))};
 }
 

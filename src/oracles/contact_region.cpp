@@ -54,7 +54,7 @@ double cross(const Vec2& o, const Vec2& a, const Vec2& b) {
 }
 
 // Andrew's monotone chain; collinear points dropped.
-std::vector<Vec2> convex_hull_2d(std::vector<Vec2> p) {
+std::vector<Vec2> monotone_chain(std::vector<Vec2> p) {
   std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
   p.erase(std::unique(p.begin(), p.end()), p.end());
   if (p.size() < 3) return p;
@@ -123,7 +123,7 @@ void plane_basis(const Vec3& n, Vec3& u, Vec3& v) {
 
 double distance_to_convex_hull_2d(const Vec2& p, std::vector<Vec2> points) {
   if (points.empty()) return INFINITY;
-  const std::vector<Vec2> hull = convex_hull_2d(std::move(points));
+  const std::vector<Vec2> hull = monotone_chain(std::move(points));
   if (hull.size() == 1) return (p - hull[0]).norm();
   bool inside = hull.size() >= 3;
   double nearest = INFINITY;
@@ -151,13 +151,26 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
   plane_basis(n, u, v);
   std::vector<Vec2> projected;
   for (const Vec3& c : corners) projected.emplace_back(u.dot(c), v.dot(c));
-  region.corners = convex_hull_2d(projected);
+  region.corners = monotone_chain(projected);
   region.empty = false;
   region.centroid = area_centroid(region.corners);
   for (size_t i = 0; i < region.corners.size(); ++i)
     for (size_t j = i + 1; j < region.corners.size(); ++j)
       region.width = std::max(region.width, (region.corners[i] - region.corners[j]).norm());
   return region;
+}
+
+std::vector<Vec2> convex_hull_2d(std::vector<Vec2> points) { return monotone_chain(std::move(points)); }
+
+double convex_hull_area_2d(const std::vector<Vec2>& points) {
+  const std::vector<Vec2> hull = monotone_chain(points);
+  double twice = 0;
+  for (size_t i = 0; hull.size() >= 3 && i < hull.size(); ++i) {
+    const Vec2& a = hull[i];
+    const Vec2& b = hull[(i + 1) % hull.size()];
+    twice += a.x() * b.y() - b.x() * a.y();
+  }
+  return 0.5 * std::abs(twice);
 }
 
 }  // namespace mfz

@@ -33,6 +33,11 @@ void plane_basis(const Vec3& n, Vec3& u, Vec3& v);
 /// boundary within rounding.
 ContactRegion contact_region(const Scene& scene, const Vec3& n, const Vec3& shift_b, double slack);
 
+/// The convex hull of `points`, counter-clockwise (collinear points dropped).
+std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> points);
+/// The area of the convex hull of `points` (0 for fewer than three).
+double convex_hull_area_2d(const std::vector<Eigen::Vector2d>& points);
+
 /// The distance from point `p` to the convex hull of `points` (0 inside).
 double distance_to_convex_hull_2d(const Eigen::Vector2d& p, std::vector<Eigen::Vector2d> points);
 
