@@ -47,12 +47,10 @@ std::string sides_with(bool first_right, bool second_right) {
 }
 
 /// How far one side's depth may stray from the exact depth under its
-/// profile: the contract's depth tolerance, its precision's rounding, its
-/// face bias and its margin.
+/// profile: the contract's depth tolerance with its precision's rounding
+/// (`scene` set to that precision), its face bias and its margin.
 double depth_allowance(const Scene& scene, const Profile& p, double exact_depth) {
-  Scene own = scene;
-  own.precision_epsilon = p.precision_epsilon;
-  return own.length_tolerance(tol::kDepth) + p.face_bias * std::max(0.0, exact_depth) + p.margin * scene.scale;
+  return scene.length_tolerance(tol::kDepth) + p.face_bias * std::max(0.0, exact_depth) + p.margin * scene.scale;
 }
 
 /// How far apart two unit normals may be under one side's profile: the
@@ -88,17 +86,27 @@ bool passes(const Verdict& v, std::initializer_list<const char*> names) {
 }
 
 /// Whether a side reduces: a profile's max-contacts reached.
-bool reduced(const mfz_manifold& m, const Profile& p) { return p.max_contacts > 0 && m.contact_count >= p.max_contacts; }
+bool reduced(const mfz_manifold& m, const Profile& p) {
+  return p.max_contacts > 0 && m.contact_count >= p.max_contacts;
+}
+
+/// One side's answer, judged under its own profile.
+struct Answer {
+  mfz_manifold m;
+  const Profile* profile;
+  Verdict verdict;         ///< the invariants: whose answer the oracles confirm
+  double depth_allowance;  ///< depth_allowance at this side's precision
+};
 
 // ---- the four comparisons, in order; each returns a disagreement or nothing ----
 
-std::optional<Disagreement> compare_colliding(const Scene& scene, const OracleAnswers& o, const Verdict&, const Verdict&,
-                                       const mfz_manifold& m1,
-                                              const mfz_manifold& m2, const DiffSide& s1, const DiffSide& s2) {
+std::optional<Disagreement> compare_colliding(const Scene& scene, const OracleAnswers& o, const Answer& a1,
+                                              const Answer& a2) {
+  const mfz_manifold &m1 = a1.m, &m2 = a2.m;
   if (m1.colliding == m2.colliding || o.touching) return std::nullopt;
   // Within either margin the hulls may be reported colliding before they touch.
   const double gap = -o.exact.signed_depth;
-  if (!o.exact.colliding && gap <= std::max(s1.profile.margin, s2.profile.margin) * scene.scale) return std::nullopt;
+  if (!o.exact.colliding && gap <= std::max(a1.profile->margin, a2.profile->margin) * scene.scale) return std::nullopt;
   const bool truth = o.exact.colliding;
   return Disagreement{"colliding",
                       format("first says %g, second %g; the exact oracle %g,", m1.colliding, m2.colliding, truth) +
@@ -106,66 +114,68 @@ std::optional<Disagreement> compare_colliding(const Scene& scene, const OracleAn
                       sides_with((m1.colliding == 1) == truth, (m2.colliding == 1) == truth)};
 }
 
-std::optional<Disagreement> compare_depth(const Scene& scene, const OracleAnswers& o, const Verdict& v1, const Verdict& v2,
-                                       const mfz_manifold& m1,
-                                          const mfz_manifold& m2, const DiffSide& s1, const DiffSide& s2) {
+std::optional<Disagreement> compare_depth(const Scene& scene, const OracleAnswers& o, const Answer& a1,
+                                          const Answer& a2) {
   const double exact = o.exact.signed_depth;
-  const double a1 = depth_allowance(scene, s1.profile, exact), a2 = depth_allowance(scene, s2.profile, exact);
-  const double d1 = -m1.penetration, d2 = -m2.penetration;
-  if (std::abs(d1 - d2) <= a1 + a2) return std::nullopt;
+  const double allowed = a1.depth_allowance + a2.depth_allowance;
+  const double d1 = -a1.m.penetration, d2 = -a2.m.penetration;
+  if (std::abs(d1 - d2) <= allowed) return std::nullopt;
   return Disagreement{"depth",
                       format("first %.6g, second %.6g, exact %.6g", d1, d2, exact) +
                           format(" (differ by %.3g L, both profiles allow %.3g L)", std::abs(d1 - d2) / scene.scale,
-                                 (a1 + a2) / scene.scale),
-                      sides_with(passes(v1, {"depth-exact"}), passes(v2, {"depth-exact"}))};
+                                 allowed / scene.scale),
+                      sides_with(passes(a1.verdict, {"depth-exact"}), passes(a2.verdict, {"depth-exact"}))};
 }
 
-std::optional<Disagreement> compare_normal(const Scene& scene, const OracleAnswers& o, const Verdict& v1, const Verdict& v2,
-                                       const mfz_manifold& m1,
-                                           const mfz_manifold& m2, const DiffSide& s1, const DiffSide& s2) {
-  const Vec3 n1 = vec(m1.normal).normalized(), n2 = vec(m2.normal).normalized();
+std::optional<Disagreement> compare_normal(const Scene& scene, const OracleAnswers& o, const Answer& a1,
+                                           const Answer& a2) {
+  const Vec3 n1 = vec(a1.m.normal).normalized(), n2 = vec(a2.m.normal).normalized();
   const double angle = std::atan2(n1.cross(n2).norm(), n1.dot(n2));
-  if (angle <= normal_allowance(s1.profile) + normal_allowance(s2.profile)) return std::nullopt;
+  if (angle <= normal_allowance(*a1.profile) + normal_allowance(*a2.profile)) return std::nullopt;
   // Where the geometry does not decide the direction (two axes of least
   // overlap, or the reverse of the best), either normal is right; the depth
   // comparison has already held.
   if (o.ties.direction) return std::nullopt;
   const double exact = o.exact.signed_depth;
   const auto right = [](const Verdict& v) { return passes(v, {"normal-realises-depth", "normal-agrees-with-epa"}); };
-  return Disagreement{"normal", format("%.3g rad apart", angle) + format("; overlap along the first %.6g, the second %.6g",
-                                                                         directed_overlap(scene.world_a, scene.world_b, n1),
-                                                                         directed_overlap(scene.world_a, scene.world_b, n2)) +
-                                    format(", exact %.6g", exact),
-                      sides_with(right(v1), right(v2))};
+  return Disagreement{
+      "normal",
+      format("%.3g rad apart", angle) +
+          format("; overlap along the first %.6g, the second %.6g", directed_overlap(scene.world_a, scene.world_b, n1),
+                 directed_overlap(scene.world_a, scene.world_b, n2)) +
+          format(", exact %.6g", exact),
+      sides_with(right(a1.verdict), right(a2.verdict))};
 }
 
 // The contacts' hulls on the contact plane: each must hold the other's
 // points (a side that reduced to its max-contacts need only lie inside the
 // other's). The region itself (the hulls' intersection, from the oracles)
 // says whose hull is right: the one that encloses its centroid.
-std::optional<Disagreement> compare_region(const Scene& scene, const OracleAnswers& o, const Verdict& v1, const Verdict& v2,
-                                       const mfz_manifold& m1,
-                                           const mfz_manifold& m2, const DiffSide& s1, const DiffSide& s2) {
+std::optional<Disagreement> compare_region(const Scene& scene, const OracleAnswers& o, const Answer& a1,
+                                           const Answer& a2) {
+  const mfz_manifold &m1 = a1.m, &m2 = a2.m;
   if (m1.contact_count < 1 || m2.contact_count < 1 || !o.face_contact) return std::nullopt;
   const Vec3 n = vec(m1.normal).normalized();
   const auto p1 = projected_contacts(m1, n), p2 = projected_contacts(m2, n);
-  const double slack = tol::kRegionPoint * scene.scale + std::max(s1.profile.margin, s2.profile.margin) * scene.scale +
-                       tol::kWorldUlps * std::max(s1.profile.precision_epsilon, s2.profile.precision_epsilon) *
-                           std::max(scene.world_extent, scene.scale);
-  const double first_outside = reduced(m2, s2.profile) ? 0 : farthest_outside(p1, p2);
-  const double second_outside = reduced(m1, s1.profile) ? 0 : farthest_outside(p2, p1);
+  // `scene` holds the coarser of the two precisions.
+  const double slack = tol::kRegionPoint * scene.scale +
+                       std::max(a1.profile->margin, a2.profile->margin) * scene.scale + scene.precision_rounding();
+  const double first_outside = reduced(m2, *a2.profile) ? 0 : farthest_outside(p1, p2);
+  const double second_outside = reduced(m1, *a1.profile) ? 0 : farthest_outside(p2, p1);
   if (std::max(first_outside, second_outside) <= slack) return std::nullopt;
   const ContactRegion region = contact_region(scene, n, Vec3::Zero(), tol::kRegionSlack * scene.scale);
-  const auto right = [](const Verdict& v) { return passes(v, {"spans-contact-region", "within-both-hulls", "on-surface"}); };
+  const auto right = [](const Verdict& v) {
+    return passes(v, {"spans-contact-region", "within-both-hulls", "on-surface"});
+  };
   const double area = scene.scale * scene.scale;
-  return Disagreement{"contact-region",
-                      format("%g and %g contacts, areas %.3g L^2", m1.contact_count, m2.contact_count,
-                             convex_hull_area_2d(p1) / area) +
-                          format(" and %.3g L^2; the first's reach %.3g L outside the second's hull, the second's %.3g L "
-                                 "outside the first's",
-                                 convex_hull_area_2d(p2) / area, first_outside / scene.scale, second_outside / scene.scale) +
-                          format("; the region's area %.3g L^2", region.empty ? 0.0 : convex_hull_area_2d(region.corners) / area),
-                      sides_with(right(v1), right(v2))};
+  return Disagreement{
+      "contact-region",
+      format("%g and %g contacts, areas %.3g L^2", m1.contact_count, m2.contact_count, convex_hull_area_2d(p1) / area) +
+          format(" and %.3g L^2; the first's reach %.3g L outside the second's hull, the second's %.3g L "
+                 "outside the first's",
+                 convex_hull_area_2d(p2) / area, first_outside / scene.scale, second_outside / scene.scale) +
+          format("; the region's area %.3g L^2", region.empty ? 0.0 : convex_hull_area_2d(region.corners) / area),
+      sides_with(right(a1.verdict), right(a2.verdict))};
 }
 
 /// One generator's answer, or why there is none.
@@ -177,10 +187,14 @@ std::optional<Disagreement> call(DiffSide& side, const char* which, const Scene&
   const CallOutcome outcome = side.session->generate(a, pa, b, pb, m, status, failure);
   if (outcome == CallOutcome::done && status == 0) return std::nullopt;
   if (outcome == CallOutcome::interrupted) return Disagreement{kInterrupted, "", ""};
-  const std::string kind = outcome == CallOutcome::crashed ? "crash" : outcome == CallOutcome::hung ? "hang" : "refused";
+  const std::string kind = outcome == CallOutcome::crashed ? "crash"
+                           : outcome == CallOutcome::hung  ? "hang"
+                                                           : "refused";
   const bool first = std::string(which) == kFirst;
-  return Disagreement{kind, std::string("the ") + which + " generator: " + (kind == "refused" ? "status " + std::to_string(status) : failure),
-                      first ? kSecond : kFirst};
+  return Disagreement{
+      kind,
+      std::string("the ") + which + " generator: " + (kind == "refused" ? "status " + std::to_string(status) : failure),
+      first ? kSecond : kFirst};
 }
 
 }  // namespace
@@ -204,22 +218,24 @@ std::optional<Disagreement> compare_generators(const CaseFile& c, DiffSide& firs
     invalid = true;
     return std::nullopt;
   }
-  mfz_manifold m1, m2;
-  if (auto none = call(first, kFirst, scene, m1)) return none;
-  if (auto none = call(second, kSecond, scene, m2)) return none;
+  Answer a1{{}, &first.profile, {}, 0}, a2{{}, &second.profile, {}, 0};
+  if (auto none = call(first, kFirst, scene, a1.m)) return none;
+  if (auto none = call(second, kSecond, scene, a2.m)) return none;
   const OracleAnswers oracles = consult_oracles(scene);
-  // Each answer judged by the invariants under its own profile: whose answer
-  // the oracles confirm.
-  Scene scene_1 = scene, scene_2 = scene;
-  scene_1.precision_epsilon = first.profile.precision_epsilon;
-  scene_2.precision_epsilon = second.profile.precision_epsilon;
-  const Verdict v1 = check_manifold(scene_1, oracles, 0, m1, first.profile);
-  const Verdict v2 = check_manifold(scene_2, oracles, 0, m2, second.profile);
-  if (auto d = compare_colliding(scene, oracles, v1, v2, m1, m2, first, second)) return d;
-  if (!m1.colliding || !m2.colliding || !oracles.exact.colliding) return std::nullopt;
-  if (auto d = compare_depth(scene, oracles, v1, v2, m1, m2, first, second)) return d;
-  if (auto d = compare_normal(scene, oracles, v1, v2, m1, m2, first, second)) return d;
-  return compare_region(scene, oracles, v1, v2, m1, m2, first, second);
+  // Each answer judged by the invariants under its own profile (the scene
+  // at that profile's precision): whose answer the oracles confirm.
+  const double coarser = scene.precision_epsilon;
+  for (Answer* a : {&a1, &a2}) {
+    scene.precision_epsilon = a->profile->precision_epsilon;
+    a->verdict = check_manifold(scene, oracles, 0, a->m, *a->profile);
+    a->depth_allowance = depth_allowance(scene, *a->profile, oracles.exact.signed_depth);
+  }
+  scene.precision_epsilon = coarser;
+  if (auto d = compare_colliding(scene, oracles, a1, a2)) return d;
+  if (!a1.m.colliding || !a2.m.colliding || !oracles.exact.colliding) return std::nullopt;
+  if (auto d = compare_depth(scene, oracles, a1, a2)) return d;
+  if (auto d = compare_normal(scene, oracles, a1, a2)) return d;
+  return compare_region(scene, oracles, a1, a2);
 }
 
 namespace {
@@ -245,8 +261,8 @@ std::string write_example(const DiffOptions& options, const DiffResult& result, 
   return write_finding(options.out_dir, file, finding, selection,
                        {"found by: manifuzz diff --generator " + options.generator + " --against " + options.against +
                             " --seed " + std::to_string(options.seed),
-                        "first: " + result.first_name + " (profile " + result.first_profile.text() + "), second: " +
-                            result.second_name + " (profile " + result.second_profile.text() + ")"},
+                        "first: " + result.first_name + " (profile " + result.first_profile.text() +
+                            "), second: " + result.second_name + " (profile " + result.second_profile.text() + ")"},
                        text, error);
 }
 
