@@ -29,6 +29,9 @@ class Generator {
   /// non-zero = refused).
   int32_t generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,
                    mfz_manifold& out) const;
+  /// The generator's own entry point, without the poisoning: for timing
+  /// it side by side with others (bench/).
+  mfz_generate_fn entry_point() const { return generate_; }
 
  private:
   std::shared_ptr<void> library_;  // keeps a plugin loaded while copies live

@@ -1,0 +1,23 @@
+#pragma once
+// The families the generator benchmark times every generator on: 1024 pairs
+// each, from fixed seeds, hulls built (Qhull) and posed before any timing.
+#include <string>
+#include <vector>
+
+#include "case/scene.h"
+
+namespace mfz::bench {
+
+struct BenchFamily {
+  std::string name;            ///< a column of the table
+  bool boxes = false;          ///< only box pairs: dBoxBox takes them
+  std::vector<Scene> scenes;
+};
+
+/// Boxes resting face to face (a small tilt, any yaw), boxes tilted a few
+/// degrees, random hulls of 8, 32 and 128 points on spheres of random radius
+/// overlapping, 64-gon cylinders cap to cap, and 32-point hulls apart (the
+/// early-out); `pairs` each.
+std::vector<BenchFamily> bench_families(int pairs = 1024);
+
+}  // namespace mfz::bench
