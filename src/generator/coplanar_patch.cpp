@@ -26,7 +26,7 @@ int gather_patch(const PosedHull& hull, int face, int* members) {
   for (int i = 0; i < count; ++i) {
     const int f = members[i], n = hull.face_size(f);
     for (int k = 0; k < n; ++k) {
-      const int g = hull.face_across(hull.face_vertex(f, k), hull.face_vertex(f, (k + 1) % n));
+      const int g = hull.face_across_step(f, k);
       if (g < 0 || count == kMaxPatchFaces || contains(members, count, g)) continue;
       if (coplanar_normals(hull.world_face_normal(g), normal)) members[count++] = g;
     }
@@ -46,7 +46,7 @@ void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
     const int f = members[i], n = hull.face_size(f);
     for (int k = 0; k < n && edges < kMaxPatchEdges; ++k) {
       const int a = hull.face_vertex(f, k), b = hull.face_vertex(f, (k + 1) % n);
-      if (!contains(members, count, hull.face_across(a, b))) from[edges] = a, to[edges++] = b;
+      if (!contains(members, count, hull.face_across_step(f, k))) from[edges] = a, to[edges++] = b;
     }
   }
   // Chain the steps into one loop; it keeps the faces' counter-clockwise turn.

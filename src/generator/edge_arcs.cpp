@@ -20,6 +20,16 @@ long long edge_key(int low, int high, int vertex_count) {
 
 EdgeArcs::EdgeArcs(const PosedHull& hull) {
   if (hull.vertex_count() > kCachedVertices) return;
+  // The twins are known already for a hull whose topology is kept.
+  if (const HullTopology* topology = hull.topology()) {
+    for (int e = 0; e < topology->edge_count(); ++e) {
+      const TopologyEdge& edge = topology->edge(e);
+      const Vec3 n_face = hull.world_face_normal(edge.face), n_twin = hull.world_face_normal(edge.twin);
+      arcs_[count_++] = {edge.v0, edge.v1, edge.face, edge.twin, n_face, n_twin, n_twin.cross(n_face)};
+    }
+    complete_ = true;
+    return;
+  }
   for (int f = 0; f < hull.face_count(); ++f) {
     const int n = hull.face_size(f);
     for (int k = 0; k < n; ++k) {
@@ -59,18 +69,6 @@ bool EdgeArcs::pair_twins(const PosedHull& hull) {
     arc.across = arc.n_twin.cross(arc.n_face);
   }
   return true;
-}
-
-// The arcs of A's edge (a -> b) and of B's edge negated (c -> d) cross when
-// c and d lie either side of the plane of a, b, a and b either side of the
-// plane of c, d, and the two crossings are one point, not antipodes.
-bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
-  const double cba = -edge_b.n_face.dot(edge_a.across);
-  const double dba = -edge_b.n_twin.dot(edge_a.across);
-  const double adc = edge_a.n_face.dot(edge_b.across);
-  const double bdc = edge_a.n_twin.dot(edge_b.across);
-  constexpr double slack = tol::kGaussArcSlack;
-  return cba * dba < slack && adc * bdc < slack && cba * bdc > -slack;
 }
 
 }  // namespace mfz

@@ -45,6 +45,17 @@ class EdgeArcs {
 /// no face of A - B. Rounding of the sign tests is given the benefit of the
 /// doubt: a flat or nearly flat edge (a fold of 1e-9 rad) is kept, and SAT's
 /// own rules decide about it as before.
-bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b);
+/// The arcs of A's edge (a -> b) and of B's edge negated (c -> d) cross when
+/// c and d lie either side of the plane of a, b, a and b either side of the
+/// plane of c, d, and the two crossings are one point, not antipodes.
+/// Inline: SAT asks it of every pair of edges.
+inline bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
+  const double cba = -edge_b.n_face.dot(edge_a.across);
+  const double dba = -edge_b.n_twin.dot(edge_a.across);
+  const double adc = edge_a.n_face.dot(edge_b.across);
+  const double bdc = edge_a.n_twin.dot(edge_b.across);
+  constexpr double slack = tol::kGaussArcSlack;
+  return cba * dba < slack && adc * bdc < slack && cba * bdc > -slack;
+}
 
 }  // namespace mfz

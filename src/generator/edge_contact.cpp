@@ -35,19 +35,19 @@ int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edge
       const int n = hull.face_size(f);
       for (int k = 0; k < n; ++k) {
         const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
-        if (v0 < v1) visit(v0, v1, f, std::min(direction.dot(hull.world_vertex(v0)), direction.dot(hull.world_vertex(v1))));
+        if (v0 < v1) visit(v0, v1, f, k, std::min(direction.dot(hull.world_vertex(v0)), direction.dot(hull.world_vertex(v1))));
       }
     }
   };
   // F22: a diagonal between two triangles of one face would add a contact
   // that the face untriangulated does not have.
-  each_edge([&](int v0, int v1, int f, double reach) {
-    if (reach > best && !hull.is_flat_edge(v0, v1, f)) best = reach;
+  each_edge([&](int, int, int f, int k, double reach) {
+    if (reach > best && !hull.is_flat_step(f, k)) best = reach;
   });
   const double slack = tol::kTie * (best - lowest) + tol::world_rounding(std::abs(best));
   int count = 0;
-  each_edge([&](int v0, int v1, int f, double reach) {
-    if (count < kMaxSupportingEdges && reach >= best - slack && !hull.is_flat_edge(v0, v1, f))
+  each_edge([&](int v0, int v1, int f, int k, double reach) {
+    if (count < kMaxSupportingEdges && reach >= best - slack && !hull.is_flat_step(f, k))
       edges[count++] = {hull.world_vertex(v0), hull.world_vertex(v1)};
   });
   return count;

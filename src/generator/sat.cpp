@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "generator/coplanar_patch.h"
+#include "generator/arc_grid.h"
 #include "generator/edge_arcs.h"
 #include "geometry/tolerances.h"
 
@@ -110,47 +111,133 @@ void all_edge_pairs(const PosedHull& a, const PosedHull& b, SatResult& best) {
   });
 }
 
-// Only the pairs whose Gauss arcs may cross: the others span no face of the
-// Minkowski difference, so their overlap exceeds the depth (edge_arcs.h).
-void minkowski_edge_pairs(const PosedHull& a, const PosedHull& b, const EdgeArcs& arcs_a, const EdgeArcs& arcs_b,
-                          SatResult& best) {
-  for (int i = 0; i < arcs_a.size(); ++i) {
-    const EdgeArc& x = arcs_a[i];
-    for (int j = 0; j < arcs_b.size(); ++j) {
-      const EdgeArc& y = arcs_b[j];
-      if (!may_span_minkowski_face(x, y)) continue;
-      const bool apart = !consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
-        return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(y.n_face, y.n_twin);
-      });
-      if (apart) return;
-    }
-  }
-}
-
 // The harness's fixes F3 (face axes win near-ties), F4 (flat edges span no
 // axis), F7 (face normals count one way only) and F14 (parallel faces tie to
-// the larger), with edge pairs pruned on the Gauss map unless `prune` is off.
-SatResult sat_with(const PosedHull& a, const PosedHull& b, bool prune) {
+// the larger), every axis measured in full: the reference the bounded SAT
+// below is checked against.
+SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
   SatResult best;
   best.depth = std::numeric_limits<double>::infinity();
   for (int f = 0; f < a.face_count(); ++f)
     if (!consider(a, b, a.world_face_normal(f), AxisKind::face_a, f, -1, best)) return best;
   for (int f = 0; f < b.face_count(); ++f)
     if (!consider(a, b, b.world_face_normal(f), AxisKind::face_b, -1, f, best)) return best;
-  if (prune) {
-    const EdgeArcs arcs_a(a), arcs_b(b);
-    if (arcs_a.complete() && arcs_b.complete()) {
-      minkowski_edge_pairs(a, b, arcs_a, arcs_b, best);
-      return best;
-    }
-  }
   all_edge_pairs(a, b, best);
+  return best;
+}
+
+// The bounded SAT: the same candidates in the same order, each first given a
+// cheap lower bound on its overlap, and measured in full (by `consider`, as
+// before) only when the bound leaves it a chance to win or to tie. For a
+// face of A, A's top along its normal is at least the face's own top and B's
+// bottom at most that of any vertex of B, here the one a climb on B's
+// vertices reaches; for an edge pair, the edges' own vertices and the two
+// hulls' centres bound both ways along the axis. A skipped axis could not
+// have changed `best`: its overlap exceeds the best by more than any tie's
+// slack. A face normal skipped this way is not a separating axis in its own
+// direction; reversed it may be, and then a later axis proves the
+// separation (SAT's axes in their own directions suffice), with another
+// normal, which a separated manifold does not report.
+struct HullSummary {
+  Vec3 centre = Vec3::Zero();
+  double reach = 0;  ///< largest distance of a vertex from the centre
+  double extent = 0;  ///< largest absolute world coordinate
+};
+
+HullSummary summary_of(const PosedHull& hull) {
+  HullSummary s;
+  for (int i = 0; i < hull.vertex_count(); ++i) s.centre += hull.world_vertex(i);
+  s.centre /= static_cast<double>(hull.vertex_count());
+  for (int i = 0; i < hull.vertex_count(); ++i) {
+    const Vec3 p = hull.world_vertex(i);
+    s.reach = std::max(s.reach, (p - s.centre).norm());
+    s.extent = std::max(s.extent, p.cwiseAbs().maxCoeff());
+  }
+  return s;
+}
+
+// The highest of face f's own vertices along its normal n.
+double face_top(const PosedHull& hull, int f, const Vec3& n) {
+  double top = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k < hull.face_size(f); ++k) top = std::max(top, n.dot(hull.world_face_point(f, k)));
+  return top;
+}
+
+// Hulls of more vertices than this climb to their support (it needs their
+// topology, built on first sight); smaller ones scan their vertices.
+constexpr int kClimbFromVertices = 64;
+
+int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
+  return hull.vertex_count() > kClimbFromVertices ? hull.climb_to_support(direction, from)
+                                                  : hull.support_vertex(direction);
+}
+
+SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
+  const HullSummary sa = summary_of(a), sb = summary_of(b);
+  // More than any tie's slack in `consider` (its extents are at most twice
+  // the reach), plus the bounds' own rounding.
+  const double rounding = 4 * tol::world_rounding(std::max(sa.extent, sb.extent) + sa.reach + sb.reach);
+  const double tie_room = tol::kEdgeAxisBias * 2 * std::max(sa.reach, sb.reach) + rounding;
+  SatResult best;
+  best.depth = std::numeric_limits<double>::infinity();
+  const auto hopeless = [&](double lower) { return lower > best.depth + tie_room; };
+  int on_b = 0, on_a = 0;  // where the last climbs ended: the next one starts there
+  for (int f = 0; f < a.face_count(); ++f) {
+    const Vec3 n = a.world_face_normal(f);
+    on_b = support_towards(b, -n, on_b);
+    if (hopeless(face_top(a, f, n) - n.dot(b.world_vertex(on_b)))) continue;
+    if (!consider(a, b, n, AxisKind::face_a, f, -1, best)) return best;
+  }
+  for (int f = 0; f < b.face_count(); ++f) {
+    const Vec3 n = b.world_face_normal(f);
+    on_a = support_towards(a, -n, on_a);
+    if (hopeless(face_top(b, f, n) - n.dot(a.world_vertex(on_a)))) continue;
+    if (!consider(a, b, n, AxisKind::face_b, -1, f, best)) return best;
+  }
+  const EdgeArcs arcs_a(a), arcs_b(b);
+  if (!arcs_a.complete() || !arcs_b.complete()) {
+    all_edge_pairs(a, b, best);
+    return best;
+  }
+  const Vec3 centres = sb.centre - sa.centre;
+  const auto pair_is_hopeless = [&](const EdgeArc& x, const EdgeArc& y) {
+    const Vec3 a0 = a.world_vertex(x.v0), b0 = b.world_vertex(y.v0);
+    const Vec3 axis = (a.world_vertex(x.v1) - a0).cross(b.world_vertex(y.v1) - b0);
+    const double length = axis.norm();
+    if (!(length > 0)) return false;
+    // m leaves A through its edge: along m the edges bound the overlap,
+    // against m the centres do.
+    const Vec3 m = (axis.dot(a0 - sa.centre) >= 0 ? axis : Vec3(-axis)) / length;
+    return hopeless(std::min(m.dot(a0) - m.dot(b0), m.dot(centres)));
+  };
+  const auto against = [&](int i, const int* js, int count) {
+    const EdgeArc& x = arcs_a[i];
+    for (int k = 0; k < count; ++k) {
+      const int j = js ? js[k] : k;
+      const EdgeArc& y = arcs_b[j];
+      if (!may_span_minkowski_face(x, y) || pair_is_hopeless(x, y)) continue;
+      const bool apart = !consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
+        return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(y.n_face, y.n_twin);
+      });
+      if (apart) return false;
+    }
+    return true;
+  };
+  if (arcs_a.size() * arcs_b.size() < kArcGridMinPairs) {
+    for (int i = 0; i < arcs_a.size(); ++i)
+      if (!against(i, nullptr, arcs_b.size())) return best;
+    return best;
+  }
+  const ArcGrid grid(arcs_b);
+  int near[kMaxArcs];
+  for (int i = 0; i < arcs_a.size(); ++i)
+    if (!against(i, near, grid.candidates(arcs_a[i], near))) return best;
   return best;
 }
 
 }  // namespace
 
-SatResult run_sat(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, true); }
-SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_with(a, b, false); }
+SatResult run_sat(const PosedHull& a, const PosedHull& b) { return bounded_sat(a, b); }
+SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_every_pair(a, b); }
 
 }  // namespace mfz

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "manifuzz/abi.h"
+#include "geometry/hull_topology.h"
 #include "geometry/tolerances.h"
 #include "geometry/vec.h"
 
@@ -24,8 +25,9 @@ inline bool coplanar_normals(const Vec3& n1, const Vec3& n2) {
 }
 
 /// World vertices are cached on the stack for hulls up to this size (larger
-/// hulls are rotated on demand), so SAT's projections are plain dot products.
-inline constexpr int kCachedVertices = 128;
+/// hulls are rotated on demand), so SAT's projections are plain dot
+/// products; such hulls also get their topology (hull_topology.h).
+inline constexpr int kCachedVertices = kTopologyMaxVertices;
 
 class PosedHull {
  public:
@@ -34,6 +36,13 @@ class PosedHull {
         cached_(hull.vertex_count <= kCachedVertices) {
     if (cached_)
       for (int i = 0; i < hull.vertex_count; ++i) world_[i] = rotation_ * local_vertex(i) + pose_.position;
+  }
+
+  /// The loops' topology, or nullptr for a hull too large or not closed.
+  /// Looked up on first use: a pair that a face axis separates never needs it.
+  const HullTopology* topology() const {
+    if (!topology_looked_up_) topology_ = topology_of(hull_), topology_looked_up_ = true;
+    return topology_;
   }
 
   int vertex_count() const { return hull_.vertex_count; }
@@ -80,9 +89,38 @@ class PosedHull {
     return best;
   }
 
+  /// A vertex furthest along a world direction, found by climbing from
+  /// `start` to a neighbour further along until none is: on a convex
+  /// polyhedron the first vertex with no neighbour further is a furthest
+  /// one, to rounding (vertices within rounding of a face's plane can stop
+  /// the climb one short, so callers use it as a bound, not as the answer).
+  /// Scans every vertex for a hull without topology.
+  int climb_to_support(const Vec3& world_direction, int start) const {
+    const HullTopology* t = cached_ ? topology() : nullptr;
+    if (!t) return support_vertex(world_direction);
+    int at = start;
+    double at_d = world_direction.dot(world_[at]);
+    for (int from = -1; from != at;) {
+      from = at;
+      for (const int* w = t->neighbours_begin(from); w != t->neighbours_end(from); ++w) {
+        const double d = world_direction.dot(world_[*w]);
+        if (d > at_d) at = *w, at_d = d;
+      }
+    }
+    return at;
+  }
+
   /// The face on the other side of the loop step v0 -> v1 of some face, or -1
   /// (an open hull, which the harness never builds).
   int face_across(int v0, int v1) const {
+    if (const HullTopology* t = topology()) {
+      for (int e = 0; e < t->edge_count(); ++e) {
+        const TopologyEdge& edge = t->edge(e);
+        if (edge.v0 == v0 && edge.v1 == v1) return edge.twin;
+        if (edge.v0 == v1 && edge.v1 == v0) return edge.face;
+      }
+      return -1;
+    }
     for (int f = 0; f < hull_.face_count; ++f) {
       const int n = face_size(f);
       for (int k = 0; k < n; ++k)
@@ -99,12 +137,29 @@ class PosedHull {
     const int other = face_across(v0, v1);
     return other >= 0 && coplanar_normals(world_face_normal(other), world_face_normal(face));
   }
+  /// The face across step k -> k+1 of face f's loop, or -1.
+  int face_across_step(int f, int k) const {
+    if (const HullTopology* t = topology()) return t->face_across_step(f, k);
+    return face_across(face_vertex(f, k), face_vertex(f, (k + 1) % face_size(f)));
+  }
+  /// is_flat_edge for step k of face f's loop.
+  bool is_flat_step(int face, int k) const {
+    const int other = face_across_step(face, k);
+    return other >= 0 && coplanar_normals(world_face_normal(other), world_face_normal(face));
+  }
 
   /// Calls visit(edge_index, v0, v1, face) once per undirected edge, in loop
   /// order: the step v0 -> v1 of `face` with v0 < v1 stands for the edge, its
   /// twin is skipped. Stops when visit returns false.
   template <class Visit>
   void for_each_edge(Visit&& visit) const {
+    if (const HullTopology* t = topology()) {
+      for (int e = 0; e < t->edge_count(); ++e) {
+        const TopologyEdge& edge = t->edge(e);
+        if (!visit(e, edge.v0, edge.v1, edge.face)) return;
+      }
+      return;
+    }
     int index = 0;
     for (int f = 0; f < face_count(); ++f) {
       const int n = face_size(f);
@@ -120,6 +175,8 @@ class PosedHull {
   const Pose& pose_;
   Mat3 rotation_;
   bool cached_;
+  mutable const HullTopology* topology_ = nullptr;
+  mutable bool topology_looked_up_ = false;
   Vec3 world_[kCachedVertices];
 };
 
