@@ -10,8 +10,12 @@
 /// the meeting point of the tangents there, and a margin covers the
 /// near-crossings may_span_minkowski_face keeps (tol::kGaussArcSlack lets
 /// arcs 3e-5 rad apart through; the margin is 30 times that). So every pair
-/// the test keeps is offered, in the order SAT tried them before (B's arcs
-/// ascending), and SAT's answer does not change by a bit.
+/// whose arcs cross is offered, in the order SAT tried them before (B's arcs
+/// ascending). The test's slack also keeps a few pairs of short arcs near
+/// each other's antipodes, which the grid leaves out: they span no face of
+/// A - B, so their overlap exceeds the depth and they never won (SAT's
+/// answer on the benchmark's 7,168 pairs, both orders, is the same to the
+/// bit).
 #include "generator/edge_arcs.h"
 
 namespace mfz {
