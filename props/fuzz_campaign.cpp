@@ -28,6 +28,7 @@
 #include "geometric_mutator.h"
 #include "harness/interruption.h"
 #include "input_name.h"
+#include "process_memory.h"
 
 namespace mfz::props {
 namespace {
@@ -106,27 +107,7 @@ class EngineProcess {
   /// The exit status once it has ended by itself (not stopped), else -1.
   int exit_status() const { return exited_ && WIFEXITED(status_) ? WEXITSTATUS(status_) : -1; }
   /// Resident memory of the engine and its jobs, in MiB.
-  double resident_mb() const {
-    double pages = 0;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator("/proc", fs::directory_options::skip_permission_denied, ec)) {
-      const std::string pid = entry.path().filename().string();
-      if (pid.empty() || !std::all_of(pid.begin(), pid.end(), [](char c) { return std::isdigit(c); })) continue;
-      std::ifstream stat(entry.path() / "stat");
-      std::string text((std::istreambuf_iterator<char>(stat)), std::istreambuf_iterator<char>());
-      const size_t close = text.rfind(')');
-      if (close == std::string::npos) continue;
-      std::istringstream fields(text.substr(close + 2));
-      std::string field;
-      long long group = 0, rss = 0;
-      for (int k = 3; k <= 24 && fields >> field; ++k) {
-        if (k == 5) group = std::atoll(field.c_str());
-        if (k == 24) rss = std::atoll(field.c_str());
-      }
-      if (group == pid_) pages += static_cast<double>(rss);
-    }
-    return pages * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1 << 20);
-  }
+  double resident_mb() const { return group_resident_mb(pid_); }
 
  private:
   pid_t pid_ = -1;

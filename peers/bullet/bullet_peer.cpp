@@ -195,22 +195,47 @@ MFZ_PEER_EXPORT const char* mfz_generator_name(void) {
 
 MFZ_PEER_EXPORT const char* mfz_generator_profile(void) { return kProfile; }
 
+/// A hull as Bullet holds a shape: its polyhedron and its hull shape about
+/// the bounding box's centre, and its diameter; built once per hull.
+struct BulletHull {
+  mfz_vec3 centre{};
+  double diameter = 0;
+  btConvexPolyhedron poly;
+  std::unique_ptr<btConvexHullShape> shape;
+  btScalar margin = -1;  ///< the margin its bounding box was last made with
+};
+
+void make_bullet_hull(const mfz_hull& h, BulletHull& out) {
+  out.centre = box_centre(h);
+  out.diameter = peer::diameter(h);
+  fill_polyhedron(h, out.centre, out.poly);
+  out.shape = std::make_unique<btConvexHullShape>(&out.poly.m_vertices[0].x(), out.poly.m_vertices.size(),
+                                                  sizeof(btVector3));
+}
+
+/// The case's margin on a kept shape. setMargin leaves the cached bounding
+/// box (made with the default 0.04) as it was: the breaking threshold is
+/// read from it, so it is made again when the margin changes.
+btConvexHullShape& with_margin(BulletHull& hull, btScalar margin) {
+  if (hull.margin != margin) {
+    hull.shape->setMargin(margin);
+    hull.shape->recalcLocalAabb();
+    hull.margin = margin;
+  }
+  return *hull.shape;
+}
+
 MFZ_PEER_EXPORT int32_t mfz_generate(const mfz_hull* a, const mfz_pose* pose_a, const mfz_hull* b,
                                      const mfz_pose* pose_b, mfz_manifold* out) {
-  const mfz_vec3 centre_a = box_centre(*a), centre_b = box_centre(*b);
-  const btTransform ta = centred_pose(*pose_a, centre_a), tb = centred_pose(*pose_b, centre_b);
-  const btScalar margin = btScalar(kMarginPerL * peer::case_scale(*a, *b));
-  btConvexPolyhedron poly_a, poly_b;
-  fill_polyhedron(*a, centre_a, poly_a);
-  fill_polyhedron(*b, centre_b, poly_b);
-  btConvexHullShape shape_a(&poly_a.m_vertices[0].x(), poly_a.m_vertices.size(), sizeof(btVector3));
-  btConvexHullShape shape_b(&poly_b.m_vertices[0].x(), poly_b.m_vertices.size(), sizeof(btVector3));
-  // setMargin leaves the cached bounding box (made with the default 0.04)
-  // as it was: the breaking threshold is read from it, so it is made again.
-  shape_a.setMargin(margin);
-  shape_b.setMargin(margin);
-  shape_a.recalcLocalAabb();
-  shape_b.recalcLocalAabb();
+  static thread_local peer::PreparedHulls<BulletHull> kept;
+  kept.begin_call();
+  BulletHull& hull_a = kept.get(*a, make_bullet_hull);
+  BulletHull& hull_b = kept.get(*b, make_bullet_hull);
+  const btTransform ta = centred_pose(*pose_a, hull_a.centre), tb = centred_pose(*pose_b, hull_b.centre);
+  const btScalar margin = btScalar(kMarginPerL * std::max(hull_a.diameter, hull_b.diameter));
+  const btConvexPolyhedron &poly_a = hull_a.poly, &poly_b = hull_b.poly;
+  btConvexHullShape& shape_a = with_margin(hull_a, margin);
+  btConvexHullShape& shape_b = with_margin(hull_b, margin);
   const btScalar threshold = breaking_threshold(shape_a, shape_b);
 
   btVector3 normal_on_b(0, 0, 1);

@@ -81,7 +81,8 @@ void init_once() {
 // ---- ode: dCollideConvexConvex ----
 
 /// A hull in ODE's convex form, about the mean of its vertices; ODE keeps
-/// pointers into these arrays, so they live as long as the geom.
+/// pointers into these arrays, so they live as long as the geom. Built once
+/// per hull (peer::PreparedHulls), placed on each call.
 struct OdeConvex {
   std::vector<dReal> planes, points;
   std::vector<unsigned int> polygons;
@@ -92,7 +93,7 @@ struct OdeConvex {
   }
 };
 
-void make_convex(const mfz_hull& h, const mfz_pose& pose, OdeConvex& c) {
+void make_convex(const mfz_hull& h, OdeConvex& c) {
   for (int i = 0; i < h.vertex_count; ++i) c.centre = c.centre + (1.0 / h.vertex_count) * vec(h.vertices[i]);
   for (int i = 0; i < h.vertex_count; ++i) {
     const Vec p = vec(h.vertices[i]) - c.centre;
@@ -108,6 +109,10 @@ void make_convex(const mfz_hull& h, const mfz_pose& pose, OdeConvex& c) {
   }
   c.geom = dCreateConvex(nullptr, c.planes.data(), static_cast<unsigned int>(h.face_count), c.points.data(),
                          static_cast<unsigned int>(h.vertex_count), c.polygons.data());
+}
+
+/// Places a kept geom at the pose of its hull.
+void place(OdeConvex& c, const mfz_pose& pose) {
   dMatrix3 r;
   rotation(pose.orientation, r);
   const Vec at = vec(pose.position) + rotate(r, c.centre);
@@ -128,9 +133,15 @@ bool is_face_normal_of(const mfz_hull& a, const mfz_pose& pose, Vec normal) {
 
 int32_t generate_convex(const mfz_hull& a, const mfz_pose& pa, const mfz_hull& b, const mfz_pose& pb,
                         mfz_manifold& out) {
-  OdeConvex ca, cb;
-  make_convex(a, pa, ca);
-  make_convex(b, pb, cb);
+  // A geom has one pose: A's and B's are kept apart, so that a pair of equal
+  // hulls gets two.
+  static thread_local peer::PreparedHulls<OdeConvex> kept_a, kept_b;
+  kept_a.begin_call();
+  kept_b.begin_call();
+  OdeConvex& ca = kept_a.get(a, make_convex);
+  OdeConvex& cb = kept_b.get(b, make_convex);
+  place(ca, pa);
+  place(cb, pb);
   dContactGeom contacts[kMaxContacts];
   const int count = dCollideConvexConvex(ca.geom, cb.geom, kMaxContacts, contacts, sizeof(dContactGeom));
   peer::clear(out);

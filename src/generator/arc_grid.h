@@ -21,7 +21,7 @@
 namespace mfz {
 
 /// Below this many pairs the grid costs more than it saves.
-inline constexpr int kArcGridMinPairs = 4096;
+inline constexpr int kArcGridMinPairs = 20000;
 
 class ArcGrid {
  public:

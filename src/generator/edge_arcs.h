@@ -50,12 +50,15 @@ class EdgeArcs {
 /// plane of c, d, and the two crossings are one point, not antipodes.
 /// Inline: SAT asks it of every pair of edges.
 inline bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
+  constexpr double slack = tol::kGaussArcSlack;
+  // Most pairs fail the first test: the other two dot products only for
+  // those that pass.
   const double cba = -edge_b.n_face.dot(edge_a.across);
   const double dba = -edge_b.n_twin.dot(edge_a.across);
+  if (!(cba * dba < slack)) return false;
   const double adc = edge_a.n_face.dot(edge_b.across);
   const double bdc = edge_a.n_twin.dot(edge_b.across);
-  constexpr double slack = tol::kGaussArcSlack;
-  return cba * dba < slack && adc * bdc < slack && cba * bdc > -slack;
+  return adc * bdc < slack && cba * bdc > -slack;
 }
 
 }  // namespace mfz
