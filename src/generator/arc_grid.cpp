@@ -36,7 +36,10 @@ ArcGrid::Box ArcGrid::box_of(const Vec3& p, const Vec3& q) const {
   return box;
 }
 
-ArcGrid::ArcGrid(const EdgeArcs& arcs_b) : arc_count_(arcs_b.size()) {
+void ArcGrid::build(const EdgeArcs& arcs_b) {
+  arc_count_ = arcs_b.size();
+  everywhere_count_ = 0;
+  query_ = 0;
   // A hull of F faces has arcs about sqrt(4 pi / F) rad long; cells of two
   // thirds of that (1.5 sqrt(F / 4 pi) across the sphere's 2 units) did best
   // of 1, 1.5 and 2 on the 128-point family, by little.

@@ -25,8 +25,11 @@ inline constexpr int kArcGridMinPairs = 20000;
 
 class ArcGrid {
  public:
+  ArcGrid() = default;
   /// Bins the arcs of B, negated (B's Gauss map as A - B sees it).
-  explicit ArcGrid(const EdgeArcs& arcs_b);
+  explicit ArcGrid(const EdgeArcs& arcs_b) { build(arcs_b); }
+  /// The same, into this object (SAT keeps one per thread: 16 KB).
+  void build(const EdgeArcs& arcs_b);
   /// The arcs of B whose boxes meet the box of A's arc `arc_a`, ascending,
   /// into `out` (room for every arc of B); returns how many.
   int candidates(const EdgeArc& arc_a, int* out) const;

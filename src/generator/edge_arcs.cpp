@@ -18,7 +18,9 @@ long long edge_key(int low, int high, int vertex_count) {
 
 }  // namespace
 
-EdgeArcs::EdgeArcs(const PosedHull& hull) {
+void EdgeArcs::build(const PosedHull& hull) {
+  count_ = 0;
+  complete_ = false;
   if (hull.vertex_count() > kCachedVertices) return;
   // The twins are known already for a hull whose topology is kept.
   if (const HullTopology* topology = hull.topology()) {

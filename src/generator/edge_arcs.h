@@ -27,8 +27,12 @@ struct EdgeArc {
 
 class EdgeArcs {
  public:
+  EdgeArcs() = default;
   /// The arcs in SAT's edge order: loop steps with v0 < v1, faces in order.
-  explicit EdgeArcs(const PosedHull& hull);
+  explicit EdgeArcs(const PosedHull& hull) { build(hull); }
+  /// The same, into this object: SAT keeps two per thread rather than 34 KB
+  /// each on the stack of every call.
+  void build(const PosedHull& hull);
   bool complete() const { return complete_; }
   int size() const { return count_; }
   const EdgeArc& operator[](int i) const { return arcs_[i]; }

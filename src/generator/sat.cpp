@@ -194,7 +194,14 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     if (hopeless(face_top(b, f, n) - n.dot(a.world_vertex(on_a)))) continue;
     if (!consider(a, b, n, AxisKind::face_b, -1, f, best)) return best;
   }
-  const EdgeArcs arcs_a(a), arcs_b(b);
+  // The arcs and the grid live in thread-local storage, not on the call's
+  // stack (about 84 KB for 128-point hulls); a call runs to its end before
+  // the thread makes another.
+  static thread_local EdgeArcs kept_arcs_a, kept_arcs_b;
+  static thread_local ArcGrid kept_grid;
+  kept_arcs_a.build(a);
+  kept_arcs_b.build(b);
+  const EdgeArcs &arcs_a = kept_arcs_a, &arcs_b = kept_arcs_b;
   if (!arcs_a.complete() || !arcs_b.complete()) {
     all_edge_pairs(a, b, best);
     return best;
@@ -228,10 +235,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
       if (!against(i, nullptr, arcs_b.size())) return best;
     return best;
   }
-  const ArcGrid grid(arcs_b);
+  kept_grid.build(arcs_b);
   int near[kMaxArcs];
   for (int i = 0; i < arcs_a.size(); ++i)
-    if (!against(i, near, grid.candidates(arcs_a[i], near))) return best;
+    if (!against(i, near, kept_grid.candidates(arcs_a[i], near))) return best;
   return best;
 }
 
