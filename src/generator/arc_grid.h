@@ -11,11 +11,12 @@
 /// near-crossings may_span_minkowski_face keeps (tol::kGaussArcSlack lets
 /// arcs 3e-5 rad apart through; the margin is 30 times that). So every pair
 /// whose arcs cross is offered, in the order SAT tried them before (B's arcs
-/// ascending). The test's slack also keeps a few pairs of short arcs near
-/// each other's antipodes, which the grid leaves out: they span no face of
-/// A - B, so their overlap exceeds the depth and they never won (SAT's
-/// answer on the benchmark's 7,168 pairs, both orders, is the same to the
-/// bit).
+/// ascending). The test's slack also keeps a few pairs whose arcs do not
+/// cross (short arcs near each other's antipodes, an end on the other's
+/// great circle but off its arc), which the grid leaves out: they span no
+/// face of A - B, so their overlap exceeds the depth and they never won
+/// (SAT's answer on the benchmark's 7,168 pairs, both orders, is the same
+/// to the bit).
 #include "generator/edge_arcs.h"
 
 namespace mfz {
