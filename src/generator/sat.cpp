@@ -131,9 +131,12 @@ SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
 // before) only when the bound leaves it a chance to win or to tie. For a
 // face of A, A's top along its normal is at least the face's own top and B's
 // bottom at most that of any vertex of B, here the one a climb on B's
-// vertices reaches; for an edge pair, the edges' own vertices and the two
-// hulls' centres bound both ways along the axis. A skipped axis could not
-// have changed `best`: its overlap exceeds the best by more than any tie's
+// vertices reaches; for an edge pair, the edges' own vertices bound the
+// overlap one way, the balls inside the hulls about their centres the other
+// way, each closed in by a climb where it leaves the pair a chance (a
+// 128-point pair measures 0.9 of its 323 crossing pairs in full, a 64-gon
+// cylinder pair 0.2 of 2,198, where they measured 35 and 992 before the
+// balls and the climbs). A skipped axis could not have changed `best`: its overlap exceeds the best by more than any tie's
 // slack. A face normal skipped this way is not a separating axis in its own
 // direction; reversed it may be, and then a later axis proves the
 // separation (SAT's axes in their own directions suffice), with another
@@ -141,6 +144,7 @@ SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
 struct HullSummary {
   Vec3 centre = Vec3::Zero();
   double reach = 0;  ///< largest distance of a vertex from the centre
+  double inner = 0;  ///< the radius of a ball about the centre inside the hull
   double extent = 0;  ///< largest absolute world coordinate
 };
 
@@ -153,6 +157,13 @@ HullSummary summary_of(const PosedHull& hull) {
     s.reach = std::max(s.reach, (p - s.centre).norm());
     s.extent = std::max(s.extent, p.cwiseAbs().maxCoeff());
   }
+  // The nearest face plane from the centre, less the planes' rounding.
+  s.inner = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < hull.face_count(); ++f) {
+    const Vec3 n = hull.world_face_normal(f);
+    s.inner = std::min(s.inner, n.dot(hull.world_face_point(f, 0) - s.centre));
+  }
+  s.inner = std::max(0.0, s.inner - 4 * tol::world_rounding(s.extent + s.reach));
   return s;
 }
 
@@ -207,15 +218,30 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     return best;
   }
   const Vec3 centres = sb.centre - sa.centre;
+  int back_a = 0, back_b = 0;  // where the last climbs against an axis ended
   const auto pair_is_hopeless = [&](const EdgeArc& x, const EdgeArc& y) {
     const Vec3 a0 = a.world_vertex(x.v0), b0 = b.world_vertex(y.v0);
     const Vec3 axis = (a.world_vertex(x.v1) - a0).cross(b.world_vertex(y.v1) - b0);
     const double length = axis.norm();
     if (!(length > 0)) return false;
     // m leaves A through its edge: along m the edges bound the overlap,
-    // against m the centres do.
+    // against m the balls inside the hulls about their centres do.
     const Vec3 m = (axis.dot(a0 - sa.centre) >= 0 ? axis : Vec3(-axis)) / length;
-    return hopeless(std::min(m.dot(a0) - m.dot(b0), m.dot(centres)));
+    // Against m: A's support along -m and B's along m, bounded first by the
+    // balls, then, where that leaves the pair a chance, by the vertices a
+    // climb reaches (a cylinder's bottom rim against the other's top rim:
+    // 990 such pairs per 64-gon pair had the cap contact's depth against m,
+    // the balls alone did not tell them from it).
+    if (!hopeless(m.dot(centres) + sa.inner + sb.inner)) {
+      back_a = a.climb_to_support(-m, back_a), back_b = b.climb_to_support(m, back_b);
+      if (!hopeless(m.dot(b.world_vertex(back_b)) - m.dot(a.world_vertex(back_a)))) return false;
+    }
+    if (hopeless(m.dot(a0) - m.dot(b0))) return true;
+    // Along m the edges are the supports only where the arcs truly cross;
+    // where the Gauss-map test's slack let the pair through, a climb from
+    // the edges finds vertices further along that bound it closer.
+    const int top = a.climb_to_support(m, x.v0), bottom = b.climb_to_support(-m, y.v0);
+    return hopeless(m.dot(a.world_vertex(top)) - m.dot(b.world_vertex(bottom)));
   };
   const auto against = [&](int i, const int* js, int count) {
     const EdgeArc& x = arcs_a[i];
