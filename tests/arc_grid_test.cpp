@@ -13,13 +13,7 @@
 namespace mfz {
 namespace {
 
-Hull cloud_hull(int points, unsigned seed) {
-  std::mt19937 random(seed);
-  std::normal_distribution<double> gauss;
-  std::vector<Vec3> cloud;
-  for (int k = 0; k < points; ++k) cloud.push_back(Vec3(gauss(random), gauss(random), gauss(random)).normalized());
-  return *build_hull(cloud).hull;
-}
+Hull cloud_hull(int points, unsigned seed) { return *build_hull(test::sphere_points(points, seed)).hull; }
 
 Quat turn(unsigned seed) {
   std::mt19937 random(seed);

@@ -16,13 +16,7 @@ namespace {
 
 Hull box(double hx, double hy, double hz) { return *build_hull(test::box_points(hx, hy, hz)).hull; }
 
-Hull random_hull(int points, unsigned seed) {
-  std::mt19937 random(seed);
-  std::normal_distribution<double> gauss;
-  std::vector<Vec3> cloud;
-  for (int k = 0; k < points; ++k) cloud.push_back(Vec3(gauss(random), gauss(random), gauss(random)).normalized());
-  return *build_hull(cloud).hull;
-}
+Hull random_hull(int points, unsigned seed) { return *build_hull(test::sphere_points(points, seed)).hull; }
 
 TEST(HullTopology, EveryEdgeOfABoxMeetsTheFacesEitherSide) {
   const Hull hull = box(1, 1, 1);

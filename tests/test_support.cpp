@@ -1,12 +1,21 @@
 #include "test_support.h"
 
 #include <filesystem>
+#include <random>
 
 #include <unistd.h>
 
 #include "families.h"
 
 namespace mfz::test {
+
+std::vector<Vec3> sphere_points(int count, unsigned seed) {
+  std::mt19937 random(seed);
+  std::normal_distribution<double> gauss;
+  std::vector<Vec3> points;
+  for (int k = 0; k < count; ++k) points.push_back(Vec3(gauss(random), gauss(random), gauss(random)).normalized());
+  return points;
+}
 
 std::vector<Vec3> box_points(double hx, double hy, double hz) { return props::box_corners(hx, hy, hz); }
 

@@ -12,6 +12,8 @@ namespace mfz::test {
 
 /// The eight corners of the box [-hx, hx] x [-hy, hy] x [-hz, hz].
 std::vector<Vec3> box_points(double hx, double hy, double hz);
+/// `count` points on the unit sphere, the same for the same seed.
+std::vector<Vec3> sphere_points(int count, unsigned seed);
 /// A regular tetrahedron's four corners around the origin.
 std::vector<Vec3> tetrahedron_points();
 /// A unit quaternion for `angle` radians about `axis`.
