@@ -112,12 +112,15 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     }
   // Relations only make sense on a manifold that is itself right.
   if (verdict.first_violation()) return outcome;
-  const RelationInput input{c, scene, manifold, oracles, level_of(c, selection.level), *profile};
+  TransformedRun kept;
+  const RelationInput input{c, scene, manifold, oracles, level_of(c, selection.level), *profile,
+                            selection.keep_transformed_run ? &kept : nullptr};
   for (const std::string& name : relation_names()) {
     if (named ? name != named->name : !selection.wants(name)) continue;
     if (auto finding = check_relation(name, input, generator, named ? &named->numbers : nullptr)) {
       if (finding->name == kInterrupted) outcome.interrupted = true;
       else outcome.finding = finding;
+      if (selection.keep_transformed_run && !kept.relation.empty()) outcome.transformed = std::move(kept);
       return outcome;
     }
   }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "case/case_file.h"
+#include "case/scene.h"
 #include "harness/generator_session.h"
 #include "harness/invariants.h"
 
@@ -47,6 +48,14 @@ enum class Level { contract, strict };
 /// check_case turns it into `interrupted`, never a finding.
 inline constexpr const char* kInterrupted = "interrupted";
 
+/// A relation's transformed run (the swapped, moved, scaled or renumbered
+/// case and the generator's answer to it), for a picture of its finding.
+struct TransformedRun {
+  std::string relation;
+  Scene scene;
+  std::optional<mfz_manifold> manifold;  ///< empty: the call crashed, hung or refused
+};
+
 struct CaseOutcome {
   bool invalid = false;  ///< not a valid input (degenerate hull): discarded, not a finding
   bool interrupted = false;  ///< SIGINT or SIGTERM cut the case short: no verdict
@@ -58,6 +67,8 @@ struct CaseOutcome {
   std::optional<Verdict> verdict;
   double scale = 0;  ///< L
   Profile profile;   ///< the profile in force (the selection's, or the case file's line)
+  /// A relation finding's transformed run, when Selection::keep_transformed_run.
+  std::optional<TransformedRun> transformed;
 };
 
 /// Which checks count (empty: all invariants and relations), and how strictly.
@@ -70,6 +81,9 @@ struct Selection {
   /// The profile came from --profile: a case file's `profile` line does not
   /// replace it.
   bool profile_from_command_line = false;
+  /// Keep a relation finding's transformed run in the outcome (pictures);
+  /// off in the runs, where it would copy hulls on every relation.
+  bool keep_transformed_run = false;
   bool wants(const std::string& name) const { return names.empty() || names.count(name) > 0; }
 };
 

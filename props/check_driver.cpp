@@ -29,33 +29,10 @@ using Clock = std::chrono::steady_clock;
 /// Budgets of the two shrinking stages (both also end at the run's deadline).
 constexpr double kShrinkTreeSeconds = 120;
 constexpr double kShrinkFileSeconds = 60;
+/// Seconds between the samples of the run's progress (its report's chart).
+constexpr double kSampleEvery = 1;
 
 double since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-// Counts per category, printed as a table at the end (RapidCheck's
-// RC_CLASSIFY, for a run outside GoogleTest).
-class Statistics {
- public:
-  void count(const std::string& table, const std::string& key) { ++tables_[table][key]; }
-  /// One table's counts on one line, for the progress report.
-  void print_counts(std::ostream& out, const std::string& table) const {
-    const auto found = tables_.find(table);
-    if (found == tables_.end()) return;
-    out << table << ":";
-    for (const auto& [key, n] : found->second) out << " " << key << " " << n;
-  }
-  void print(std::ostream& out, long long total) const {
-    for (const auto& [table, rows] : tables_) {
-      out << "  " << table << ":";
-      for (const auto& [key, n] : rows)
-        out << "  " << key << " " << std::fixed << std::setprecision(1) << 100.0 * n / std::max(1LL, total) << "%";
-      out << std::defaultfloat << "\n";
-    }
-  }
-
- private:
-  std::map<std::string, std::map<std::string, long long>> tables_;
-};
 
 std::string count_bucket(int n) {
   if (n <= 4) return std::to_string(n);
@@ -70,7 +47,7 @@ std::string depth_decade(double depth_over_l) {
   return "1e" + std::to_string(decade);
 }
 
-void record(Statistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
+void record(RunStatistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
   stats.count("depth (x L)", depth_decade(o.tags.depth_over_l));
   stats.count("hull family A", g.hull_a);
   stats.count("placement", g.placement);
@@ -82,6 +59,7 @@ void record(Statistics& stats, const GeneratedCase& g, const CaseOutcome& o) {
   stats.count("contacts", count_bucket(o.tags.contact_count));
   if (o.tags.touching) stats.count("special", "touching");
   if (o.tags.tie) stats.count("special", "axis tie");
+  if (o.verdict) stats.add_verdict(*o.verdict);
 }
 
 // The run's end: --seconds covers shrinking too.
@@ -172,13 +150,14 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
         << "); one it does not make is rounding, counted and passed over\n";
   }
   rc::Random random(options.seed);
-  Statistics stats;
   CheckResult result;
+  RunStatistics& stats = result.statistics;
   const auto started = Clock::now();
   Deadline deadline;
   if (options.seconds)
     deadline.at = started + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(*options.seconds));
-  double last_progress = 0;
+  double last_progress = 0, last_sample = 0;
+  stats.sample(0, 0);
   for (long long index = 0;; ++index) {
     if (options.cases && result.cases >= *options.cases) break;
     if (deadline.left() <= 0) break;
@@ -220,6 +199,7 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
       break;
     }
     const double now = since(started);
+    if (now - last_sample >= kSampleEvery) last_sample = now, stats.sample(now, result.cases);
     if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
       last_progress = now;
       log << "  " << result.cases << " cases, " << static_cast<long long>(result.cases / now) << " cases/s, "
@@ -229,6 +209,7 @@ std::optional<CheckResult> run_check(const CheckOptions& given, std::ostream& lo
     }
   }
   result.seconds = since(started);
+  stats.sample(result.seconds, result.cases);
   result.interrupted = interrupted();
   release_interruptions();
   if (result.interrupted) log << "manifuzz check: interrupted; the summary so far:\n";

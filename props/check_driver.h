@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "case_property.h"
+#include "harness/run_statistics.h"
 
 namespace mfz::props {
 
@@ -44,6 +45,9 @@ struct CheckResult {
   std::string minimised_text;
   int shrink_steps = 0;
   bool interrupted = false;  ///< stopped by SIGINT or SIGTERM
+  /// What the run covered: counts per category, each check's margins, and
+  /// the cases over time (the summary and --report).
+  RunStatistics statistics;
 };
 
 /// Runs the check; progress and statistics go to `log`. Returns nullopt and a

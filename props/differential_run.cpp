@@ -294,7 +294,8 @@ std::optional<DiffResult> run_diff(const DiffOptions& options, std::ostream& log
   const auto gen = any_case(farthest, options.hull_families);
   rc::Random random(options.seed);
   const auto started = Clock::now();
-  double last_progress = 0;
+  double last_progress = 0, last_sample = 0;
+  result.statistics.sample(0, 0);
   for (long long index = 0;; ++index) {
     if (options.cases && result.cases >= *options.cases) break;
     if (options.seconds && since(started) >= *options.seconds) break;
@@ -308,6 +309,10 @@ std::optional<DiffResult> run_diff(const DiffOptions& options, std::ostream& log
     }
     if (d && d->kind == kInterrupted) break;
     ++result.cases;
+    result.statistics.count("hull family A", generated.hull_a);
+    result.statistics.count("placement", generated.placement);
+    result.statistics.count("outcome", !d ? "agree" : d->sides_with == "both" ? "tie (both confirmed)" : d->kind);
+    if (d && d->sides_with != "both") result.statistics.count("the oracles side with", d->sides_with);
     if (!d) {
       ++result.agreeing;
     } else if (d->sides_with == "both") {
@@ -326,12 +331,14 @@ std::optional<DiffResult> run_diff(const DiffOptions& options, std::ostream& log
       }
     }
     const double now = since(started);
+    if (now - last_sample >= 1) last_sample = now, result.statistics.sample(now, result.cases);
     if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
       last_progress = now;
       log << "  " << result.cases << " cases, " << result.cases - result.agreeing - result.ties << " disagreeing\n";
     }
   }
   result.seconds = since(started);
+  result.statistics.sample(result.seconds, result.cases);
   result.interrupted = interrupted();
   release_interruptions();
   return result;

@@ -15,6 +15,7 @@
 #include "case/case_file.h"
 #include "harness/generator_session.h"
 #include "harness/profile.h"
+#include "harness/run_statistics.h"
 
 namespace mfz::props {
 
@@ -73,6 +74,8 @@ struct DiffResult {
   double seconds = 0;
   std::map<std::string, KindTally> kinds;
   bool interrupted = false;
+  /// Families, placements and outcomes counted, and cases over time.
+  RunStatistics statistics;
 };
 
 /// Runs the differential campaign. nullopt and a one-line `error` when a

@@ -476,7 +476,8 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
   }
   Campaign campaign(options, *generator, confirmer.get(), confirmer_profile, work, log, findings_out);
   const auto started = Clock::now();
-  double last_sync = 0, last_progress = 0;
+  double last_sync = 0, last_progress = 0, last_sample = 0;
+  result.statistics.sample(0, 0, 0);
   std::string first_error;
   while (engine.running() && !interrupted()) {
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -486,6 +487,7 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
         first_error = line;
     }
     const double now = since(started);
+    if (now - last_sample >= 1) last_sample = now, result.statistics.sample(now, stats.execs, stats.coverage);
     if (now - last_sync >= kSyncEvery) {
       last_sync = now;
       result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
@@ -512,6 +514,7 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
   release_interruptions();
   result.execs = stats.execs;
   result.coverage = stats.coverage;
+  result.statistics.sample(result.seconds, stats.execs, stats.coverage);
   result.features = stats.features;
   if (result.execs == 0 && !result.interrupted && ended_with != 0) {
     error = quoted(options.fuzzer, 4096) + " stopped before fuzzing (exit " + std::to_string(ended_with) + ")" +

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "case_property.h"
+#include "harness/run_statistics.h"
 
 namespace mfz::props {
 
@@ -52,6 +53,8 @@ struct FuzzResult {
   std::vector<FuzzFinding> findings;
   long long rounding_only = 0;  ///< distinct findings --confirm-with did not make
   bool interrupted = false;
+  /// Executions and coverage over time (about a sample a second).
+  RunStatistics statistics;
 };
 
 /// Runs the campaign; progress and the summary go to `log`, one

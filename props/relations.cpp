@@ -27,12 +27,23 @@ struct Posed {
   Pose pose_b;
 };
 
-std::optional<Finding> call(GeneratorSession& g, const Posed& p, mfz_manifold& out, const std::string& relation) {
+// A picture of a finding shows the transformed run beside the case: the
+// caller may ask for the last one to be kept (RelationInput::keep).
+std::optional<Finding> call(GeneratorSession& g, const Posed& p, mfz_manifold& out, const std::string& relation,
+                            const RelationInput& in) {
   const mfz_hull a = p.a->view(), b = p.b->view();
   const mfz_pose pa = p.pose_a.to_abi(), pb = p.pose_b.to_abi();
   int32_t status = 0;
   std::string failure;
-  switch (g.generate(a, pa, b, pb, out, status, failure)) {
+  const CallOutcome outcome = g.generate(a, pa, b, pb, out, status, failure);
+  if (in.keep) {
+    in.keep->relation = relation;
+    in.keep->scene = posed_scene(*p.a, p.pose_a, *p.b, p.pose_b);
+    in.keep->scene.precision_epsilon = in.profile.precision_epsilon;
+    in.keep->manifold.reset();
+    if (outcome == CallOutcome::done && status == 0) in.keep->manifold = out;
+  }
+  switch (outcome) {
     case CallOutcome::crashed: return Finding{"crash", failure + " (in the " + relation + " run)"};
     case CallOutcome::hung: return Finding{"hang", failure + " (in the " + relation + " run)"};
     case CallOutcome::interrupted: return Finding{kInterrupted, "(in the " + relation + " run)"};
@@ -47,7 +58,7 @@ std::optional<Finding> call(GeneratorSession& g, const Posed& p, mfz_manifold& o
 // right on its own (docs/contract.md, "Ties").
 std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& out, const RelationInput& in,
                            const std::string& relation, double depth_factor = 1) {
-  if (auto f = call(g, p, out, relation)) return f;
+  if (auto f = call(g, p, out, relation, in)) return f;
   Scene scene = posed_scene(*p.a, p.pose_a, *p.b, p.pose_b);
   scene.precision_epsilon = in.profile.precision_epsilon;
   const Verdict v = check_transformed_manifold(scene, in.oracles, depth_factor, out, in.profile);
@@ -289,7 +300,7 @@ std::optional<Finding> recorded(std::optional<Finding> f, const std::string& rel
 
 std::optional<Finding> deterministic(const RelationInput& in, GeneratorSession& g, const Numbers*) {
   mfz_manifold again;
-  if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, in.scene.pose_b}, again, "deterministic"))
+  if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, in.scene.pose_b}, again, "deterministic", in))
     return recorded(f, "deterministic", {});
   if (!identical(in.manifold, again)) return recorded(Finding{"deterministic", "a second call gave different bits"}, "deterministic", {});
   return std::nullopt;
@@ -391,7 +402,7 @@ std::optional<Finding> move_along_normal(const RelationInput& in, GeneratorSessi
     Pose pb = in.scene.pose_b;
     pb.position += fraction * depth * n;
     mfz_manifold out;
-    if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, pb}, out, "move-along-normal"))
+    if (auto f = call(g, {&in.scene.hull_a, in.scene.pose_a, &in.scene.hull_b, pb}, out, "move-along-normal", in))
       return recorded(f, "move-along-normal", used);
     const bool should_collide = fraction < 1;
     // margin: a gap within the margin may still be reported as colliding.

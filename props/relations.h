@@ -22,6 +22,9 @@ struct RelationInput {
   /// The generator's profile: each run is held to the invariants under it,
   /// and the comparisons accept what it declares (docs/profiles.md).
   Profile profile = {};
+  /// When set, each transformed run is kept here (the last one run): a
+  /// picture of a relation finding shows it beside the case.
+  TransformedRun* keep = nullptr;
 };
 
 /// A relation named by a case file: `relation NAME numbers...` (the motion,

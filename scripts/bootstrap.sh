@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages manifuzz needs, and only those missing.
 # Run as root (or with sudo available). Nothing is fetched from anywhere but
-# Debian's archive.
+# Debian's archive. `--tests` adds what only the tests need: Chromium, which
+# opens the HTML reports and case views headless.
+#
+#   scripts/bootstrap.sh [--tests]
 set -euo pipefail
 
 packages=(
@@ -13,6 +16,9 @@ packages=(
   libssl-dev zip                         # SHA-1 names of fuzz inputs; seed corpus archives
   libbullet-dev libode-dev               # peer generators
 )
+if [ "${1:-}" = "--tests" ]; then
+  packages+=(chromium)                   # the HTML pages' test (tests/html_pages_test.sh)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -8,7 +8,7 @@
 # the sanitizer preset leaves out the mutants and the peers (not built there).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/bootstrap.sh
+scripts/bootstrap.sh --tests
 for preset in default clang sanitize; do
   echo "== $preset"
   cmake --preset "$preset" >/dev/null

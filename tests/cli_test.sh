@@ -258,5 +258,36 @@ expect 1 'disagreement' -- "$manifuzz" diff --generator builtin --against tutori
 check_that "diff --junit names each kind" sh -c "grep -q 'name=\"contact-region\"' '$scratch/junit/diff.xml' && grep -q '<failure' '$scratch/junit/diff.xml'"
 expect_one_line_error 'cannot write --junit file' -- "$manifuzz" check --cases 5 --junit /proc/version/x.xml
 
+# render: a picture of one case; a failing case is drawn and exits 1 (a
+# crashing plugin too); bad input is a one-line error and status 2.
+expect 0 '' -- "$manifuzz" render "$good" -o "$scratch/render/box.svg"
+expect 0 '' -- "$manifuzz" render "$good" -o "$scratch/render/box_again.svg"
+check_that "render gives the same bytes twice" cmp -s "$scratch/render/box.svg" "$scratch/render/box_again.svg"
+expect 0 '' -- "$manifuzz" render "$good" --output "$scratch/render/box.html"
+check_that "render -o .html writes a page with its picture" grep -q '<svg' "$scratch/render/box.html"
+expect 1 '' -- "$manifuzz" render --generator tutorial "$source_dir/corpus/regressions/f1-frustum-side-planes-slope-inwards.case" -o "$scratch/render/f1.svg"
+check_that "render circles the failing contact" grep -q 'on-surface (contact 1)' "$scratch/render/f1.svg"
+expect 1 '' -- "$manifuzz" render --generator "$plugin_dir/libmfz_test_crashing.so" "$good" -o "$scratch/render/crash.svg"
+check_that "render draws the crashing plugin's case and names the crash" grep -q 'no answer: crash' "$scratch/render/crash.svg"
+expect_one_line_error 'no output file' -- "$manifuzz" render "$good"
+expect_one_line_error 'must end in .svg or .html' -- "$manifuzz" render "$good" -o "$scratch/render/box.png"
+expect_one_line_error 'line 5: expected 3 numbers' -- "$manifuzz" render "$scratch/short_line.case" -o "$scratch/render/x.svg"
+expect_one_line_error 'not finite' -- "$manifuzz" render "$scratch/nan.case" -o "$scratch/render/x.svg"
+expect_one_line_error 'fewer than four points' -- "$manifuzz" render "$scratch/three_points.case" -o "$scratch/render/x.svg"
+expect_one_line_error 'cannot load generator' -- "$manifuzz" render --generator "$scratch/text.so" "$good" -o "$scratch/render/x.svg"
+expect_one_line_error 'cannot write' -- "$manifuzz" render "$good" -o /proc/version/x.svg
+# --render DIR beside explain's and replay's text.
+expect 0 'Verdict: every invariant holds' -- "$manifuzz" explain --render "$scratch/explained" "$good"
+check_that "explain --render writes the SVG and the page" test -s "$scratch/explained/box_on_box.svg" -a -s "$scratch/explained/box_on_box.html"
+expect 1 'VIOLATION on-surface' -- "$manifuzz" replay --generator tutorial --render "$scratch/replayed" "$good" "$source_dir/corpus/regressions/f1-frustum-side-planes-slope-inwards.case"
+check_that "replay --render draws every case" test -s "$scratch/replayed/box_on_box.svg" -a -s "$scratch/replayed/f1-frustum-side-planes-slope-inwards.svg"
+# --report DIR: the run's report; tried before the run.
+expect 0 'report in' -- "$manifuzz" check --cases 60 --jobs 2 --seed 3 --out "$scratch/none" --report "$scratch/report-jobs" --quiet
+check_that "check --jobs --report counts every job's cases" grep -q '<th>cases</th><td>60</td>' "$scratch/report-jobs/report.html"
+check_that "check --jobs --report merges every job's margins" grep -q '<td>finite</td><td>60</td>' "$scratch/report-jobs/report.html"
+expect 1 'report in' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --cases 50 --seed 3 --out "$scratch/crash" --quiet --report "$scratch/report-crash"
+check_that "check --report shows the finding with its replay command" sh -c "grep -q 'manifuzz replay --generator $plugin_dir/libmfz_test_crashing.so' '$scratch/report-crash/report.html'"
+expect_one_line_error 'cannot write the report' -- "$manifuzz" check --cases 5 --report /proc/version/r
+
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

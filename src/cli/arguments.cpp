@@ -20,7 +20,8 @@ std::optional<Arguments> parse_arguments(const std::vector<std::string>& words, 
   Arguments args;
   for (size_t i = 0; i < words.size(); ++i) {
     const std::string& w = words[i];
-    if (w.rfind("--", 0) != 0 || w == "--") {
+    const bool named = switches.count(w) || valued.count(w);  // also a short name such as -o
+    if (!named && (w.rfind("--", 0) != 0 || w == "--")) {
       args.positional.push_back(w);
       continue;
     }

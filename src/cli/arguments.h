@@ -75,5 +75,6 @@ int check_command(const std::vector<std::string>& words);
 int promote_command(const std::vector<std::string>& words);
 int fuzz_command(const std::vector<std::string>& words);
 int diff_command(const std::vector<std::string>& words);
+int render_command(const std::vector<std::string>& words);
 
 }  // namespace mfz::cli

@@ -18,6 +18,7 @@
 #include "cli/arguments.h"
 #include "cli/program_files.h"
 #include "harness/junit_report.h"
+#include "cli/run_reports.h"
 
 namespace mfz::cli {
 
@@ -29,6 +30,8 @@ namespace {
 /// What one job of `check --jobs` tells the parent on its stdout, besides
 /// its VIOLATION line: "cases N seconds T".
 constexpr const char* kJobTally = "cases ";
+/// The prefix of a job's statistics lines (RunStatistics::to_lines).
+const std::string kJobStatistics = "statistics ";
 
 // One job: the check on its own stream (seed + job), its log into a file
 // (the first job's to the terminal, for the progress lines).
@@ -47,6 +50,9 @@ int run_one_job(props::CheckOptions options, int job, int jobs, int tally_fd) {
     status = kExitInputError;
   } else {
     tally = std::string(kJobTally) + std::to_string(result->cases) + " seconds " + std::to_string(result->seconds) + "\n";
+    // Its statistics, a line each behind kJobStatistics, for the report.
+    std::istringstream lines(result->statistics.to_lines());
+    for (std::string line; std::getline(lines, line);) tally += kJobStatistics + line + "\n";
     if (result->finding) {
       if (job > 0) std::cerr << quiet.str();
       tally += "VIOLATION " + result->finding->name + " " + result->case_path + "\n";
@@ -62,7 +68,9 @@ int run_one_job(props::CheckOptions options, int job, int jobs, int tally_fd) {
 // `check --jobs J`: J processes, each on its own stream (seeds S .. S+J-1),
 // the cases shared out; the first finding stops the others (SIGTERM: they
 // end with their summary) and is the run's.
-int run_jobs(const props::CheckOptions& options, int jobs, std::string& violation, long long& cases, double& seconds) {
+int run_jobs(const props::CheckOptions& options, int jobs, std::string& violation, long long& cases, double& seconds,
+             RunStatistics& statistics) {
+  std::vector<std::vector<ProgressSample>> progress(static_cast<size_t>(jobs));
   std::vector<pid_t> children;
   std::vector<int> tallies;
   std::cerr << "manifuzz check: " << jobs << " jobs on seeds " << options.seed << " to " << options.seed + jobs - 1
@@ -98,6 +106,10 @@ int run_jobs(const props::CheckOptions& options, int jobs, std::string& violatio
         std::sscanf(line.c_str(), "cases %lld seconds %lf", &n, &t);
         cases += n;
         seconds = std::max(seconds, t);
+      } else if (line.rfind(kJobStatistics, 0) == 0) {
+        RunStatistics one;
+        if (one.add_line(line.substr(kJobStatistics.size()))) statistics.merge(one);
+        if (!one.samples().empty()) progress[at].push_back(one.samples()[0]);
       } else if (line.rfind("VIOLATION ", 0) == 0 && violation.empty()) {
         violation = line;
       }
@@ -113,6 +125,7 @@ int run_jobs(const props::CheckOptions& options, int jobs, std::string& violatio
       worst = kExitInterrupted;
     }
   }
+  statistics.set_samples(combined_progress(progress));
   std::cerr << "manifuzz check: " << jobs << " jobs, " << cases << " cases in " << seconds << " s ("
             << static_cast<long long>(cases / std::max(seconds, 1e-9)) << " cases/s)\n";
   if (!violation.empty()) std::printf("%s\n", violation.c_str());
@@ -148,11 +161,11 @@ bool write_check_junit(const std::string& path, const std::string& generator, co
 int check_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family", "--junit", "--confirm-with"},
+      words, {"--generator", "--cases", "--seed", "--seconds", "--jobs", "--out", "--call-timeout", "--only", "--profile", "--family", "--junit", "--confirm-with", "--report"},
       {"--quiet", "--strict"}, error);
   const auto usage = [](const std::string& why) {
     std::cerr << "manifuzz check: " << why
-              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F] [--junit FILE] [--confirm-with G2])\n";
+              << " (usage: manifuzz check --generator G [--cases N] [--seed S] [--seconds T] [--jobs J] [--out DIR] [--strict] [--profile P] [--family F] [--junit FILE] [--confirm-with G2] [--report DIR])\n";
     return kExitInputError;
   };
   if (!args) return usage(error);
@@ -191,6 +204,32 @@ int check_command(const std::vector<std::string>& words) {
   if (!jobs) return usage("--jobs takes a whole number from 1 to " + std::to_string(4 * cores));
   const std::string junit = args->get("--junit", "");
   if (args->options.count("--junit") && !junit_writable(junit, error)) return usage(error);
+  const std::string report_dir = args->get("--report", "");
+  if (args->options.count("--report") && !report_dir_writable(report_dir, error)) return usage(error);
+  const ReplayWith replay{args->get("--generator", "builtin"), args->has("--strict"), options.profile_override,
+                          options.call_timeout};
+  // --report DIR: the run's statistics, and the finding with its picture.
+  const auto write_report = [&](const std::string& violation, long long cases, double seconds, long long invalid,
+                                const RunStatistics& statistics, const std::string& detail) {
+    RunReport report;
+    report.title = "manifuzz check --generator " + replay.generator + " --seed " + std::to_string(options.seed) +
+                   (*jobs > 1 ? " --jobs " + std::to_string(*jobs) : "") + (replay.strict ? " --strict" : "");
+    report.summary = {{"generator", replay.generator},
+                      {"seed", std::to_string(options.seed)},
+                      {"level", replay.strict ? "strict" : "contract"},
+                      {"cases", std::to_string(cases)},
+                      {"seconds", std::to_string(seconds)},
+                      {"cases/s", std::to_string(static_cast<long long>(cases / std::max(seconds, 1e-9)))}};
+    if (invalid >= 0) report.summary.push_back({"invalid inputs discarded", std::to_string(invalid)});
+    report.statistics = statistics;
+    if (!violation.empty()) {
+      // "VIOLATION <name> <file>"
+      const size_t name_end = violation.find(' ', 10);
+      report.findings.push_back(reported_finding(violation.substr(10, name_end - 10), detail,
+                                                 violation.substr(name_end + 1), replay));
+    }
+    return write_report_to(report_dir, report, "check", std::cerr);
+  };
   const auto reported = [&](int status, const std::string& violation, double seconds) {
     if (!junit.empty() && !write_check_junit(junit, args->get("--generator", "builtin"), options, violation, seconds, error)) {
       std::cerr << "manifuzz check: " << error << "\n";
@@ -207,7 +246,9 @@ int check_command(const std::vector<std::string>& words) {
     std::string violation;
     long long cases = 0;
     double seconds = 0;
-    const int status = run_jobs(options, static_cast<int>(*jobs), violation, cases, seconds);
+    RunStatistics statistics;
+    const int status = run_jobs(options, static_cast<int>(*jobs), violation, cases, seconds, statistics);
+    if (!report_dir.empty() && !write_report(violation, cases, seconds, -1, statistics, "")) return kExitInputError;
     return reported(status, violation, seconds);
   }
   const auto result = props::run_check(options, std::cerr, error);
@@ -215,9 +256,13 @@ int check_command(const std::vector<std::string>& words) {
     std::cerr << "manifuzz check: " << error << "\n";
     return kExitInputError;
   }
+  const std::string violation =
+      result->finding ? "VIOLATION " + result->finding->name + " " + result->case_path : std::string();
+  if (!report_dir.empty() && !write_report(violation, result->cases, result->seconds, result->invalid,
+                                           result->statistics, result->finding ? result->finding->detail : ""))
+    return kExitInputError;
   if (!result->finding) return reported(result->interrupted ? kExitInterrupted : kExitClean, "", result->seconds);
   std::cerr << "minimised case (" << result->shrink_steps << " shrink steps):\n" << result->minimised_text;
-  const std::string violation = "VIOLATION " + result->finding->name + " " + result->case_path;
   std::printf("%s\n", violation.c_str());
   return reported(kExitViolation, violation, result->seconds);
 }

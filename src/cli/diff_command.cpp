@@ -7,6 +7,7 @@
 #include <random>
 
 #include "cli/arguments.h"
+#include "cli/run_reports.h"
 #include "cli/program_files.h"
 #include "differential_run.h"
 #include "families.h"
@@ -17,7 +18,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: manifuzz diff --generator G1 --against G2 [--cases N] [--seconds T] [--seed S] [--family F] [--out DIR] "
-    "[--profile P] [--against-profile P] [--junit FILE] [FILE...]";
+    "[--profile P] [--against-profile P] [--junit FILE] [--report DIR] [FILE...]";
 
 /// Without --cases or --seconds a diff compares this many cases.
 constexpr long long kDefaultCases = 2000;
@@ -74,13 +75,56 @@ int compare_files(const Arguments& args, const std::vector<std::string>& files, 
   return status;
 }
 
+// A disagreement's picture: each generator's answer to the example case,
+// side by side.
+ReportedFinding disagreement_finding(const std::string& kind, const props::KindTally& tally, const ReplayWith& first,
+                                     const ReplayWith& second) {
+  const std::string detail = std::to_string(tally.cases) + " cases; the first, before it was minimised: " +
+                             tally.example_detail;
+  ReportedFinding f = reported_finding(kind, detail, tally.example_path, first);
+  const ReportedFinding other = reported_finding(kind, detail, tally.example_path, second);
+  if (!f.pictures.empty()) f.pictures[0].title = first.generator + "'s answer";
+  if (!other.pictures.empty()) {
+    f.pictures.resize(std::min<size_t>(f.pictures.size(), 1));
+    f.pictures.push_back(other.pictures[0]);
+    f.pictures.back().title = second.generator + "'s answer";
+  }
+  f.replay_command = "manifuzz diff --generator " + first.generator + " --against " + second.generator + " " +
+                     tally.example_path;
+  return f;
+}
+
+bool write_diff_report(const std::string& dir, const Arguments& args, const props::DiffOptions& options,
+                       const props::DiffResult& result) {
+  const ReplayWith first{args.get("--generator", ""), false, options.profile_override, options.call_timeout};
+  const ReplayWith second{args.get("--against", ""), false, options.against_profile_override, options.call_timeout};
+  RunReport report;
+  report.title = "manifuzz diff --generator " + first.generator + " --against " + second.generator + " --seed " +
+                 std::to_string(options.seed);
+  report.statistics = result.statistics;
+  long long disagreeing = 0;
+  for (const auto& [kind, tally] : result.kinds) disagreeing += tally.cases;
+  report.summary = {{"generators", result.first_name + " (profile " + result.first_profile.text() + ") against " +
+                                       result.second_name + " (profile " + result.second_profile.text() + ")"},
+                    {"seed", std::to_string(options.seed)},
+                    {"cases", std::to_string(result.cases)},
+                    {"seconds", std::to_string(result.seconds)},
+                    {"cases/s", std::to_string(static_cast<long long>(result.cases / std::max(result.seconds, 1e-9)))},
+                    {"agreeing", std::to_string(result.agreeing)},
+                    {"ties (both confirmed by the oracles)", std::to_string(result.ties)},
+                    {"disagreeing", std::to_string(disagreeing)},
+                    {"checks made", "whether they collide, the depth, the normal, the contact region"}};
+  for (const auto& [kind, tally] : result.kinds) report.findings.push_back(disagreement_finding(kind, tally, first, second));
+  return write_report_to(dir, report, "diff", std::cerr);
+}
+
 }  // namespace
 
 int diff_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(words,
                                     {"--generator", "--against", "--cases", "--seconds", "--seed", "--out", "--family",
-                                     "--call-timeout", "--profile", "--against-profile", "--junit"},
+                                     "--call-timeout", "--profile", "--against-profile", "--junit", "--report"},
                                     {"--quiet"}, error);
   if (!args) return fail(error + " (" + kUsage + ")");
   if (!args->options.count("--generator") || !args->options.count("--against"))
@@ -119,9 +163,12 @@ int diff_command(const std::vector<std::string>& words) {
     return compare_files(*args, args->positional, first, second);
   }
 
+  const std::string report_dir = args->get("--report", "");
+  if (args->options.count("--report") && !report_dir_writable(report_dir, error)) return fail(error);
   const auto result = props::run_diff(options, std::cerr, error);
   if (!result) return fail(error);
   props::print_diff_summary(*result, std::cout);
+  if (!report_dir.empty() && !write_diff_report(report_dir, *args, options, *result)) return kExitInputError;
   if (!junit.empty() &&
       !write_junit(junit, "manifuzz diff", junit_cases(*result), result->seconds, error))
     return fail(error);

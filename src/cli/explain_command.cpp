@@ -7,6 +7,7 @@
 #include "harness/case_run.h"
 #include "oracles/minkowski_difference.h"
 #include "cli/arguments.h"
+#include "case_pictures.h"
 #include "cli/program_files.h"
 #include "generator/clipping_generator.h"
 #include "harness/report.h"
@@ -122,10 +123,10 @@ bool named_relation(const CaseFile& c) {
 // built-in's steps re-runs the built-in in process with a trace.
 int explain_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile"}, {"--strict"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile", "--render"}, {"--strict"}, error);
   if (!args || args->positional.size() != 1) {
     std::cerr << "manifuzz explain: " << (args ? "expected exactly one case file" : error)
-              << " (usage: manifuzz explain [--generator G] [--strict] [--profile P] FILE)\n";
+              << " (usage: manifuzz explain [--generator G] [--strict] [--profile P] [--render DIR] FILE)\n";
     return kExitInputError;
   }
   const std::string spec = resolve_generator(args->get("--generator", "builtin"));
@@ -143,11 +144,21 @@ int explain_command(const std::vector<std::string>& words) {
     std::cerr << "manifuzz explain: " << error << "\n";
     return kExitInputError;
   }
+  selection.keep_transformed_run = args->options.count("--render") > 0;
   std::optional<props::CaseOutcome> outcome;
   if (parsed.value) outcome = props::check_case(*parsed.value, *session, selection);
   if (!parsed.value || outcome->invalid) {
     std::cerr << "manifuzz explain: " << (parsed.value ? file + ": " + outcome->invalid_reason : parsed.error) << "\n";
     return kExitInputError;
+  }
+  // --render DIR: the pictures beside the text, DIR/STEM.svg and .html.
+  if (args->options.count("--render")) {
+    const std::string dir = args->get("--render", "");
+    const std::vector<CasePicture> runs = props::pictures_of_outcome(*parsed.value, *outcome, session->name());
+    if (!props::write_case_pictures(dir, props::file_stem(file), runs, "manifuzz explain: " + file, error)) {
+      std::cerr << "manifuzz explain: " << error << "\n";
+      return kExitInputError;
+    }
   }
   SceneBuild built = make_scene(*parsed.value);
   const OracleAnswers oracles = consult_oracles(*built.scene);

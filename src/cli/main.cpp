@@ -39,6 +39,12 @@ constexpr const char* kUsage =
     "  promote FILE [--name NAME] [--dir DIR] [--generator G] [--strict]\n"
     "                                             minimise a finding (case file or fuzz artefact) into\n"
     "                                             DIR/NAME.case (default corpus/regressions), a regression case\n"
+    "  render  FILE -o OUT.svg|OUT.html [--generator G] [--strict]\n"
+    "                                             a picture of the case: both hulls in the contact frame,\n"
+    "                                             the reference and incident faces, the clipped polygon,\n"
+    "                                             the contacts, n, and the check that breaks; .html can be\n"
+    "                                             rotated and zoomed. explain and replay take --render DIR;\n"
+    "                                             check, fuzz and diff take --report DIR (DIR/report.html)\n"
     "Exit status: 0 nothing found, 1 an invariant was violated, 2 usage, load or input error.\n";
 
 // What --help lists after the usage: the generators G may name (those whose
@@ -70,6 +76,7 @@ int main(int argc, char** argv) {
   if (command == "fuzz") return mfz::cli::fuzz_command(words);
   if (command == "promote") return mfz::cli::promote_command(words);
   if (command == "diff") return mfz::cli::diff_command(words);
+  if (command == "render") return mfz::cli::render_command(words);
   std::cerr << "manifuzz: unknown command '" << command << "' (try manifuzz --help)\n";
   return mfz::cli::kExitInputError;
 }

@@ -7,6 +7,7 @@
 
 #include "case_property.h"
 #include "cli/arguments.h"
+#include "case_pictures.h"
 #include "cli/program_files.h"
 #include "harness/junit_report.h"
 #include "harness/report.h"
@@ -56,10 +57,11 @@ void add_json(Json& json, const std::string& file, const props::CaseOutcome* o, 
 
 int replay_command(const std::vector<std::string>& words) {
   std::string error;
-  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile", "--junit"}, {"--json", "--strict"}, error);
+  const auto args = parse_arguments(words, {"--generator", "--call-timeout", "--profile", "--junit", "--render"},
+                                    {"--json", "--strict"}, error);
   if (!args || args->positional.empty()) {
     std::cerr << "manifuzz replay: " << (args ? "no case file given" : error)
-              << " (usage: manifuzz replay [--generator G] [--json] [--strict] [--profile P] [--junit FILE] FILE...)\n";
+              << " (usage: manifuzz replay [--generator G] [--json] [--strict] [--profile P] [--junit FILE] [--render DIR] FILE...)\n";
     return kExitInputError;
   }
   std::unique_ptr<GeneratorSession> session = nullptr;
@@ -75,6 +77,8 @@ int replay_command(const std::vector<std::string>& words) {
     std::cerr << "manifuzz replay: " << error << "\n";
     return kExitInputError;
   }
+  const bool render = args->options.count("--render") > 0;
+  selection.keep_transformed_run = render;
   const std::string junit = args->get("--junit", "");
   if (args->options.count("--junit") && !junit_writable(junit, error)) {
     std::cerr << "manifuzz replay: " << error << "\n";
@@ -104,6 +108,13 @@ int replay_command(const std::vector<std::string>& words) {
         if (!json_output) std::printf("VIOLATION %s %s\n", run->finding->name.c_str(), file.c_str());
       }
       if (!json_output) print_text(file, *run);
+      // --render DIR: each case's pictures beside its verdict.
+      if (render && !props::write_case_pictures(args->get("--render", ""), props::file_stem(file),
+                                         props::pictures_of_outcome(*parsed.value, *run, session->name()),
+                                         "manifuzz replay: " + file, error)) {
+        std::cerr << "manifuzz replay: " << error << "\n";
+        outcome.worsen(kExitInputError);
+      }
     }
     if (json_output) add_json(json, file, run ? &*run : nullptr, error);
     JunitCase c{"manifuzz.replay." + session->name(), file};

@@ -22,6 +22,15 @@ const char* status_name(CheckStatus status) {
   return "?";
 }
 
+int contact_named_in(const std::string& detail) {
+  const size_t at = detail.rfind("(contact ");
+  if (at == std::string::npos) return -1;
+  int contact = -1;
+  char close = 0;
+  if (std::sscanf(detail.c_str() + at, "(contact %d%c", &contact, &close) != 2 || close != ')') return -1;
+  return contact;
+}
+
 const InvariantCheck* Verdict::first_violation() const {
   for (const InvariantCheck& c : checks)
     if (c.status == CheckStatus::fail) return &c;
@@ -86,6 +95,7 @@ std::string text(const char* format, Numbers... numbers) {
   return line;
 }
 
+// contact_named_in reads this form back.
 std::string describe(const char* what, int contact) {
   return contact >= 0 ? text("%s (contact %d)", what, contact) : std::string(what);
 }

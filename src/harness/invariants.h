@@ -33,6 +33,10 @@ struct InvariantCheck {
 /// engine may report the case colliding, with the gap as its penetration.
 bool separated_within_margin(const Scene& scene, const OracleAnswers& oracles, const Profile& profile);
 
+/// The contact a check's detail names ("... (contact 3)"), or -1: the point a
+/// picture of the finding circles.
+int contact_named_in(const std::string& detail);
+
 /// The invariant names, in the contract's order.
 const std::vector<std::string>& invariant_names();
 
