@@ -4,7 +4,8 @@
 # found, minimised, promoted into a regression case that fails against it and
 # passes against the built-in and in the regression test; a campaign resumes
 # from its corpus, and one killed with SIGKILL leaves a corpus of whole inputs
-# that the next campaign starts from; bad input is a one-line error.
+# that the next campaign starts from; bad input is a one-line error; the
+# run's report holds its coverage over time and its findings' pictures.
 # usage: fuzz_cli_test.sh MANIFUZZ PLUGIN_DIR UNIT_TESTS
 set -u
 manifuzz=$1 plugins=$2 unit_tests=$3
@@ -16,7 +17,8 @@ check() { checks=$((checks + 1)); "$@" || fail "$*"; }
 
 # 1. A broken generator (normals the wrong way) is found and minimised.
 out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 12 --jobs 2 \
-        --corpus "$scratch/corpus-sign" --out "$scratch/found" --minimise-seconds 3 2>"$scratch/fuzz.log")
+        --corpus "$scratch/corpus-sign" --out "$scratch/found" --minimise-seconds 3 --report "$scratch/fuzz-report" \
+        2>"$scratch/fuzz.log")
 status=$?
 check test "$status" -eq 1
 finding=$(sed -n 's/^VIOLATION [^ ]* //p' <<<"$out" | head -1)
@@ -25,6 +27,13 @@ check grep -q "^note found by: manifuzz fuzz --generator" "$finding"
 check grep -q "distinct finding" "$scratch/fuzz.log"
 "$manifuzz" replay --generator "$plugins/libmfz_mutant_normal_sign.so" "$finding" >/dev/null 2>&1
 check test $? -eq 1
+# --report: coverage over time, the corpus's statistics, each finding with
+# its picture and the command that replays it.
+report=$scratch/fuzz-report/report.html
+check grep -q "Coverage over time" "$report"
+check grep -q "corpus inputs replayed after the run" "$report"
+check grep -q "manifuzz replay --generator $plugins/libmfz_mutant_normal_sign.so" "$report"
+check grep -q 'class="case-data"' "$report"
 
 # 2. Promoted in one command: fails against the broken generator, passes
 # against the built-in and in the regression test, with no other edit.

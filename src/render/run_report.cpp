@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <optional>
 #include <filesystem>
 #include <fstream>
 
@@ -27,8 +29,23 @@ std::string general(double x) {
 
 // ---- charts: inline SVG ----
 
+// Keys that start with a number ("2", "5-8", "1e-3") in the order of that
+// number, then the others by name.
+std::vector<std::pair<std::string, long long>> in_reading_order(const std::map<std::string, long long>& rows) {
+  std::vector<std::pair<std::string, long long>> sorted(rows.begin(), rows.end());
+  const auto leading = [](const std::string& key) {
+    char* end = nullptr;
+    const double x = std::strtod(key.c_str(), &end);
+    return end != key.c_str() ? x : INFINITY;
+  };
+  std::stable_sort(sorted.begin(), sorted.end(),
+                   [&](const auto& x, const auto& y) { return leading(x.first) < leading(y.first); });
+  return sorted;
+}
+
 // One table's counts as horizontal bars, in percent of the table's total.
-std::string bar_chart(const std::map<std::string, long long>& rows) {
+std::string bar_chart(const std::map<std::string, long long>& table) {
+  const auto rows = in_reading_order(table);
   long long total = 0, most = 1;
   for (const auto& [key, n] : rows) total += n, most = std::max(most, n);
   const double row = 18, label = 170, bars = 300;
