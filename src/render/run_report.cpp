@@ -68,7 +68,7 @@ std::string bar_chart(const std::map<std::string, long long>& table) {
 std::string margin_histogram(const CheckMargins& m) {
   long long most = 1;
   for (const long long n : m.bins) most = std::max(most, n);
-  const double width = 34, height = 44;
+  const double width = 46, height = 44;
   std::string svg = "<svg class=\"chart\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" + fixed(width * kMarginBins, 0) +
                     "\" height=\"" + fixed(height + 14, 0) + "\">";
   for (int k = 0; k < kMarginBins; ++k) {
