@@ -11,6 +11,8 @@
 #include <ccd/ccd.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <sstream>
 #include <filesystem>
 #include <functional>
 #include <iostream>
@@ -190,6 +192,21 @@ int main(int argc, char** argv) {
   std::vector<Generator> loaded;
   std::vector<Contender> contenders;
   add_plugin(contenders, loaded, "built-in", "libmanifuzz_clipping.so", false);
+  // MANIFUZZ_BENCH_PLUGINS="NAME=PATH;NAME=PATH": more generators timed in the
+  // same run, beside the built-in (a user's own plugin, or the built-in of
+  // another commit: a change is measured against its baseline on one core
+  // in one process, not across runs of a noisy machine).
+  if (const char* more = std::getenv("MANIFUZZ_BENCH_PLUGINS")) {
+    std::stringstream list(more);
+    for (std::string item; std::getline(list, item, ';');) {
+      const size_t equals = item.find('=');
+      if (equals == std::string::npos || equals == 0) {
+        std::fprintf(stderr, "generator_bench: MANIFUZZ_BENCH_PLUGINS takes NAME=PATH;...: '%s' left out\n", item.c_str());
+        continue;
+      }
+      add_plugin(contenders, loaded, item.substr(0, equals), item.substr(equals + 1), false);
+    }
+  }
   add_plugin(contenders, loaded, "Bullet SAT + clip (float)", "libmanifuzz_peer_bullet_sat.so", false);
   add_plugin(contenders, loaded, "Bullet GJK-EPA + clip (float)", "libmanifuzz_peer_bullet.so", false);
   add_plugin(contenders, loaded, "ODE SAT + clip", "libmanifuzz_peer_ode.so", false);

@@ -74,18 +74,74 @@ TEST(HullTopology, EqualLoopsShareOneEntryWhateverTheCoordinates) {
   EXPECT_NE(topology_of(small.view()), topology_of(other.view()));
 }
 
-TEST(HullTopology, AnEvictedHullIsBuiltAgainTheSame) {
-  const Hull hull = box(1, 1, 1);
-  const HullTopology* first = topology_of(hull.view());
+// Loops of `base` with every vertex renamed by a permutation: the same faces
+// in the same order, so the face across each step is the same, under keys
+// the store has never seen.
+struct Relabelled {
+  std::vector<int32_t> loops;
+  mfz_hull view;
+};
+
+Relabelled relabelled(const Hull& base, unsigned seed) {
+  const mfz_hull v = base.view();
+  std::vector<int> name(v.vertex_count);
+  for (int i = 0; i < v.vertex_count; ++i) name[i] = i;
+  std::shuffle(name.begin(), name.end(), std::mt19937(seed));
+  Relabelled r;
+  for (int i = 0; i < v.face_offsets[v.face_count]; ++i) r.loops.push_back(name[v.face_vertices[i]]);
+  r.view = v;
+  r.view.face_vertices = r.loops.data();
+  return r;
+}
+
+std::vector<int> across_of(const HullTopology& t, const Hull& hull) {
+  std::vector<int> out;
+  for (int f = 0; f < hull.face_count(); ++f)
+    for (int k = 0; k < hull.face_size(f); ++k) out.push_back(t.face_across_step(f, k));
+  return out;
+}
+
+// Hulls of 128 points, as many as the ring holds, written one after
+// another; then looked up two at a time, as a generator call does: one from
+// that cycle and one never seen before. Each hull of the cycle is then found
+// just where the new one is about to be written. It must still read right
+// after the new one was built, all the way round the ring and past its end.
+TEST(HullTopology, AHeldTopologyOutlivesTheNextLookupAsTheRingTurns) {
+  const Hull base = random_hull(128, 7);
+  const HullTopology* first = topology_of(base.view());
   ASSERT_NE(first, nullptr);
-  const int edges = first->edge_count();
-  std::vector<Hull> others;
-  for (int k = 0; k < 2 * kTopologySlots; ++k)
-    others.push_back(random_hull(8 + k, 1000 + k));
-  for (const Hull& other : others) ASSERT_NE(topology_of(other.view()), nullptr);
-  const HullTopology* again = topology_of(hull.view());
-  ASSERT_NE(again, nullptr);
-  EXPECT_EQ(again->edge_count(), edges);
+  const std::vector<int> expected = across_of(*first, base);
+  const int edges = first->edge_count();  // `first` itself is not held past the next lookups
+  // An entry's size: a 40-byte header, then offsets, loops, the face across
+  // each step, edges, neighbour offsets and neighbours, in 16-byte units.
+  const size_t words = (base.face_count() + 1) + 2 * 2 * edges + 4 * edges + (base.vertex_count() + 1) + 2 * edges;
+  const size_t entry = (40 + 4 * words + 15) / 16 * 16;
+  const int fit = static_cast<int>(kTopologyStoreBytes / entry);
+  unsigned fresh = 1u << 30;
+  for (const int hulls : {fit - 1, fit, fit + 1}) {
+    std::vector<Relabelled> cycle;
+    for (int i = 0; i < hulls; ++i) cycle.push_back(relabelled(base, 1000 * hulls + i));
+    for (const Relabelled& r : cycle) ASSERT_NE(topology_of(r.view), nullptr);
+    for (int round = 0; round < 2; ++round)
+      for (int i = 0; i < hulls; ++i) {
+        const Relabelled unseen = relabelled(base, ++fresh);
+        const HullTopology* a = topology_of(cycle[i].view);
+        const HullTopology* b = topology_of(unseen.view);
+        ASSERT_NE(a, nullptr);
+        ASSERT_NE(b, nullptr);
+        ASSERT_EQ(across_of(*a, base), expected) << hulls << " hulls, round " << round << ", hull " << i;
+        ASSERT_EQ(a->edge_count(), edges);
+        ASSERT_EQ(across_of(*b, base), expected) << hulls << " hulls, round " << round << ", hull " << i;
+      }
+  }
+}
+
+TEST(HullTopology, AHullLookedUpAgainIsFoundNotBuilt) {
+  const Hull hull = random_hull(32, 11);
+  const HullTopology* once = topology_of(hull.view());
+  const Hull other = random_hull(40, 12);
+  ASSERT_NE(topology_of(other.view()), nullptr);
+  EXPECT_EQ(topology_of(hull.view()), once);
 }
 
 TEST(HullTopology, LoopsThatDoNotCloseGetNone) {

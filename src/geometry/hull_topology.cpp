@@ -2,50 +2,192 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 
 namespace mfz {
 
 namespace {
 
-bool loops_fit(const mfz_hull& hull) {
+// The loops' counts are in range: the hash may read them.
+bool counts_fit(const mfz_hull& hull) {
   if (hull.vertex_count < 4 || hull.vertex_count > kTopologyMaxVertices) return false;
   if (hull.face_count < 4 || hull.face_count > kTopologyMaxFaces) return false;
-  if (hull.face_offsets[0] != 0) return false;
+  const int steps = hull.face_offsets[hull.face_count];
+  return hull.face_offsets[0] == 0 && steps >= 3 * hull.face_count && steps <= kTopologyMaxSteps;
+}
+
+// Every loop has three steps or more and names vertices of the hull.
+bool loops_fit(const mfz_hull& hull) {
   for (int f = 0; f < hull.face_count; ++f)
     if (hull.face_offsets[f + 1] - hull.face_offsets[f] < 3) return false;
   const int steps = hull.face_offsets[hull.face_count];
-  if (steps > kTopologyMaxSteps) return false;
   for (int i = 0; i < steps; ++i)
     if (hull.face_vertices[i] < 0 || hull.face_vertices[i] >= hull.vertex_count) return false;
   return true;
 }
 
-}  // namespace
-
-bool HullTopology::same_loops(const mfz_hull& hull) const {
-  if (hull.vertex_count != vertex_count_ || hull.face_count != face_count_) return false;
-  const size_t offsets = sizeof(int32_t) * (face_count_ + 1);
-  if (std::memcmp(offsets_, hull.face_offsets, offsets) != 0) return false;
-  return std::memcmp(loops_, hull.face_vertices, sizeof(int32_t) * step_count_) == 0;
+// FNV-1a over the counts, the offsets and the loops, a word at a time.
+uint64_t loops_hash(const mfz_hull& hull) {
+  uint64_t h = 1469598103934665603ull;
+  const auto mix = [&h](uint32_t word) { h = (h ^ word) * 1099511628211ull; };
+  mix(static_cast<uint32_t>(hull.vertex_count));
+  mix(static_cast<uint32_t>(hull.face_count));
+  for (int f = 0; f <= hull.face_count; ++f) mix(static_cast<uint32_t>(hull.face_offsets[f]));
+  for (int i = 0; i < hull.face_offsets[hull.face_count]; ++i) mix(static_cast<uint32_t>(hull.face_vertices[i]));
+  return h;
 }
 
-bool HullTopology::build(const mfz_hull& hull) {
-  vertex_count_ = -1;  // unusable until complete
-  if (!loops_fit(hull)) return false;
+// The words a topology takes after its header: offsets and loops, the face
+// across each step, the edges (four words each), neighbour offsets and
+// neighbours (two per edge). A closed polyhedron has an edge per two steps.
+size_t words_for(int vertices, int faces, int steps) {
+  const int edges = steps / 2;
+  return static_cast<size_t>((faces + 1) + steps + steps + 4 * edges + (vertices + 1) + 2 * edges);
+}
+
+constexpr size_t kAlignment = 16;
+size_t aligned(size_t bytes) { return (bytes + kAlignment - 1) / kAlignment * kAlignment; }
+constexpr size_t kLargestEntry =
+    (sizeof(HullTopology) + sizeof(int32_t) * (kTopologyMaxFaces + 1 + 2 * kTopologyMaxSteps + 4 * kTopologyMaxEdges +
+                                               kTopologyMaxVertices + 1 + 2 * kTopologyMaxEdges) +
+     kAlignment - 1) / kAlignment * kAlignment;
+static_assert(kTopologyStoreBytes >= 64 * kLargestEntry, "the ring must hold many of the largest topologies");
+
+}  // namespace
+
+// The ring: topologies are written one after another at the head; when the
+// next does not fit before the end, the head goes back to the start and a
+// new lap begins. An entry is alive while the head has not passed over it:
+// written this lap, or last lap at or past the head. The index is a set-
+// associative table of hashes (kWays entries a set; the stalest gives way).
+class TopologyStore {
+ public:
+  const HullTopology* find(const mfz_hull& hull) {
+    if (!counts_fit(hull)) return nullptr;
+    if (!arena_) reserve();
+    // The last two hulls first, without hashing: a call's pair comes again
+    // (the relations, the shrinker), and every box has the same loops.
+    for (Entry* e : recent_)
+      if (e && alive(*e) && same_loops(at(*e), hull)) return hit(*e);
+    const uint64_t hash = loops_hash(hull);
+    Entry* set = index_.get() + (hash % kSets) * kWays;
+    for (int w = 0; w < kWays; ++w) {
+      Entry& e = set[w];
+      if (e.hash == hash && alive(e) && same_loops(at(e), hull)) return hit(e);
+    }
+    if (!loops_fit(hull)) return nullptr;
+    Entry& victim = *std::min_element(set, set + kWays, [this](const Entry& x, const Entry& y) { return age(x) > age(y); });
+    const HullTopology* built = build(hull, hash, victim);
+    if (built) remember(victim);
+    return built;
+  }
+
+ private:
+  struct Entry {
+    uint64_t hash = 0;
+    uint64_t offset = 0;
+    uint64_t lap = 0;  ///< 0: empty
+  };
+  static constexpr size_t kSets = 8192;
+  static constexpr int kWays = 4;
+
+  const HullTopology* hit(Entry& e) {
+    if (near_head(e)) move_to_head(e);
+    remember(e);
+    return at(e);
+  }
+  void remember(Entry& e) {
+    if (recent_[0] != &e) recent_[1] = recent_[0], recent_[0] = &e;
+  }
+
+  void reserve() {
+    arena_.reset(new std::byte[kTopologyStoreBytes]);  // not value-initialised: pages touched as used
+    index_.reset(new Entry[kSets * kWays]());
+  }
+  HullTopology* at(const Entry& e) const { return reinterpret_cast<HullTopology*>(arena_.get() + e.offset); }
+  bool alive(const Entry& e) const { return e.lap == lap_ || (e.lap + 1 == lap_ && e.offset >= head_); }
+  // How far ahead of the head an entry lies along the ring (the next bytes
+  // written are nearest); a dead entry is at distance 0.
+  size_t distance_ahead(const Entry& e) const {
+    if (!alive(e)) return 0;
+    return e.lap == lap_ ? kTopologyStoreBytes - head_ + e.offset : e.offset - head_;
+  }
+  // Older entries are nearer the head; empty and dead ones are oldest.
+  size_t age(const Entry& e) const { return kTopologyStoreBytes - distance_ahead(e); }
+  // An entry the next lookups could overwrite while the caller still holds
+  // it: two more entries of the largest size, and the end of a lap skipped.
+  bool near_head(const Entry& e) const { return distance_ahead(e) < 4 * kLargestEntry; }
+
+  static bool same_loops(const HullTopology* t, const mfz_hull& hull) {
+    if (hull.vertex_count != t->vertex_count_ || hull.face_count != t->face_count_) return false;
+    if (std::memcmp(t->words(), hull.face_offsets, sizeof(int32_t) * (t->face_count_ + 1)) != 0) return false;
+    return std::memcmp(t->words() + t->loops_at_, hull.face_vertices, sizeof(int32_t) * t->step_count_) == 0;
+  }
+
+  // The head, with room for `bytes` before the end of the ring.
+  std::byte* claim(size_t bytes) {
+    if (head_ + bytes > kTopologyStoreBytes) head_ = 0, ++lap_;
+    std::byte* at = arena_.get() + head_;
+    head_ += bytes;
+    return at;
+  }
+
+  void move_to_head(Entry& e) {
+    const HullTopology* from = at(e);
+    const size_t bytes = aligned(sizeof(HullTopology) + sizeof(int32_t) * from->size_words_);
+    // The source may lie where the head is about to go: memmove.
+    const uint64_t old_offset = e.offset;
+    std::byte* to = claim(bytes);
+    std::memmove(to, arena_.get() + old_offset, bytes);
+    e.offset = static_cast<uint64_t>(to - arena_.get());
+    e.lap = lap_;
+  }
+
+  const HullTopology* build(const mfz_hull& hull, uint64_t hash, Entry& entry);
+
+  std::unique_ptr<std::byte[]> arena_;
+  std::unique_ptr<Entry[]> index_;
+  Entry* recent_[2] = {nullptr, nullptr};  ///< the entries last returned, newest first
+  size_t head_ = 0;
+  uint64_t lap_ = 1;
+};
+
+// The topology is written straight into the ring at the head. Should the
+// loops not close, the head stays past what was written, so that no entry
+// still counts as alive where the failed build wrote.
+const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, Entry& entry) {
   const int faces = hull.face_count, steps = hull.face_offsets[faces], vertices = hull.vertex_count;
-  std::memcpy(offsets_, hull.face_offsets, sizeof(int32_t) * (faces + 1));
-  std::memcpy(loops_, hull.face_vertices, sizeof(int32_t) * steps);
+  if (steps % 2 != 0) return nullptr;  // a closed polyhedron has two steps per edge
+  const size_t bytes = aligned(sizeof(HullTopology) + sizeof(int32_t) * words_for(vertices, faces, steps));
+  HullTopology* t = reinterpret_cast<HullTopology*>(claim(bytes));
+  entry = {};
+  t->vertex_count_ = vertices, t->face_count_ = faces, t->step_count_ = steps, t->edge_count_ = steps / 2;
+  t->loops_at_ = faces + 1;
+  t->across_at_ = t->loops_at_ + steps;
+  t->edges_at_ = t->across_at_ + steps;
+  t->neighbour_offsets_at_ = t->edges_at_ + 4 * t->edge_count_;
+  t->neighbours_at_ = t->neighbour_offsets_at_ + vertices + 1;
+  t->size_words_ = t->neighbours_at_ + 2 * t->edge_count_;
+  int32_t* words = reinterpret_cast<int32_t*>(t + 1);
+  int32_t* offsets = words;
+  int32_t* loops = words + t->loops_at_;
+  int32_t* across = words + t->across_at_;
+  TopologyEdge* edges = reinterpret_cast<TopologyEdge*>(words + t->edges_at_);
+  int32_t* neighbour_offsets = words + t->neighbour_offsets_at_;
+  int32_t* neighbours = words + t->neighbours_at_;
+  std::memcpy(offsets, hull.face_offsets, sizeof(int32_t) * (faces + 1));
+  std::memcpy(loops, hull.face_vertices, sizeof(int32_t) * steps);
   // Steps bucketed by their first vertex (a counting sort, linear): the
   // twin of v0 -> v1 is the step in v1's bucket that ends at v0.
   int step_end[kTopologyMaxSteps], step_face[kTopologyMaxSteps];
   int bucket_offsets[kTopologyMaxVertices + 1] = {};
   for (int f = 0; f < faces; ++f) {
-    const int begin = offsets_[f], end = offsets_[f + 1];
+    const int begin = offsets[f], end = offsets[f + 1];
     for (int i = begin; i < end; ++i) {
-      step_end[i] = loops_[i + 1 < end ? i + 1 : begin];
+      step_end[i] = loops[i + 1 < end ? i + 1 : begin];
       step_face[i] = f;
-      if (step_end[i] == loops_[i]) return false;
-      ++bucket_offsets[loops_[i] + 1];
+      if (step_end[i] == loops[i]) return nullptr;
+      ++bucket_offsets[loops[i] + 1];
     }
   }
   for (int v = 0; v < vertices; ++v) bucket_offsets[v + 1] += bucket_offsets[v];
@@ -53,11 +195,11 @@ bool HullTopology::build(const mfz_hull& hull) {
   int fill[kTopologyMaxVertices];
   std::copy(bucket_offsets, bucket_offsets + vertices, fill);
   for (int i = 0; i < steps; ++i) {
-    const int at = fill[loops_[i]]++;
+    const int at = fill[loops[i]]++;
     bucket_end[at] = step_end[i], bucket_face[at] = step_face[i];
   }
   for (int i = 0; i < steps; ++i) {
-    const int v0 = loops_[i], v1 = step_end[i];
+    const int v0 = loops[i], v1 = step_end[i];
     int twins = 0;
     int face = -1;
     for (int j = bucket_offsets[v1]; j < bucket_offsets[v1 + 1]; ++j) {
@@ -65,59 +207,40 @@ bool HullTopology::build(const mfz_hull& hull) {
       face = twin ? bucket_face[j] : face;
       twins += twin;
     }
-    across_[i] = face;
-    if (twins != 1) return false;  // open, or an edge in more than two faces
+    across[i] = face;
+    if (twins != 1) return nullptr;  // open, or an edge in more than two faces
   }
   // Edges in SAT's order, and each vertex's neighbours.
   int degree[kTopologyMaxVertices + 1] = {};
-  edge_count_ = 0;
+  int edge_count = 0;
   for (int f = 0; f < faces; ++f) {
-    const int begin = offsets_[f], n = offsets_[f + 1] - begin;
+    const int begin = offsets[f], n = offsets[f + 1] - begin;
     for (int k = 0; k < n; ++k) {
-      const int v0 = loops_[begin + k], v1 = loops_[begin + (k + 1) % n];
+      const int v0 = loops[begin + k], v1 = loops[begin + (k + 1) % n];
       if (v0 > v1) continue;
-      edges_[edge_count_++] = {v0, v1, f, across_[begin + k]};
+      if (edge_count == t->edge_count_) return nullptr;
+      edges[edge_count++] = {v0, v1, f, across[begin + k]};
       ++degree[v0], ++degree[v1];
     }
   }
-  neighbour_offsets_[0] = 0;
-  for (int v = 0; v < vertices; ++v) neighbour_offsets_[v + 1] = neighbour_offsets_[v] + degree[v];
+  if (edge_count != t->edge_count_) return nullptr;
+  neighbour_offsets[0] = 0;
+  for (int v = 0; v < vertices; ++v) neighbour_offsets[v + 1] = neighbour_offsets[v] + degree[v];
   int filled[kTopologyMaxVertices] = {};
-  for (int e = 0; e < edge_count_; ++e) {
-    const TopologyEdge& edge = edges_[e];
-    neighbours_[neighbour_offsets_[edge.v0] + filled[edge.v0]++] = edge.v1;
-    neighbours_[neighbour_offsets_[edge.v1] + filled[edge.v1]++] = edge.v0;
+  for (int e = 0; e < edge_count; ++e) {
+    const TopologyEdge& edge = edges[e];
+    neighbours[neighbour_offsets[edge.v0] + filled[edge.v0]++] = edge.v1;
+    neighbours[neighbour_offsets[edge.v1] + filled[edge.v1]++] = edge.v0;
   }
   for (int v = 0; v < vertices; ++v)
-    if (degree[v] < 3) return false;  // a vertex in no corner of the polyhedron
-  vertex_count_ = vertices, face_count_ = faces, step_count_ = steps;
-  return true;
+    if (degree[v] < 3) return nullptr;  // a vertex in no corner of the polyhedron
+  entry = {hash, static_cast<uint64_t>(reinterpret_cast<std::byte*>(t) - arena_.get()), lap_};
+  return t;
 }
 
-// The least recently used slot gives way.
-class TopologyCache {
- public:
-  const HullTopology* find(const mfz_hull& hull) {
-    ++clock_;
-    for (int s = 0; s < kTopologySlots; ++s)
-      if (slots_[s].same_loops(hull)) {
-        last_use_[s] = clock_;
-        return &slots_[s];
-      }
-    const int victim = static_cast<int>(std::min_element(last_use_, last_use_ + kTopologySlots) - last_use_);
-    last_use_[victim] = clock_;
-    return slots_[victim].build(hull) ? &slots_[victim] : nullptr;
-  }
-
- private:
-  HullTopology slots_[kTopologySlots];
-  unsigned long long last_use_[kTopologySlots] = {};
-  unsigned long long clock_ = 0;
-};
-
 const HullTopology* topology_of(const mfz_hull& hull) {
-  static thread_local TopologyCache cache;
-  return cache.find(hull);
+  static thread_local TopologyStore store;
+  return store.find(hull);
 }
 
 }  // namespace mfz

@@ -6,14 +6,18 @@
 /// decide it, so the loops are the key, compared in full (never the address:
 /// the next hull a caller builds often lands where the last one was freed).
 ///
-/// Where it lives: each thread keeps the last kTopologySlots topologies in
-/// fixed storage of its own, filled on the first call that brings a hull,
-/// so a generator called through the ABI reaches them without allocating
-/// and without the caller handing anything over. A plugin's user does
-/// nothing: the same loops passed again hit. Repeated pairs are the
-/// common case (the relations, the shrinker and the fuzzer's pose
-/// mutations call the same hulls again and again, and every box has the
-/// same loops).
+/// Where it lives: each thread keeps a store of topologies, a ring of
+/// kTopologyStoreBytes reserved on the thread's first generator call (one
+/// allocation per thread, never one per call; pages are touched only as the
+/// ring fills) with an index by a hash of the loops. A generator called
+/// through the ABI reaches it without allocating and without the caller
+/// handing anything over: a plugin's user does nothing, the same loops
+/// passed again hit. The ring holds the last few thousand hulls (about 2,000
+/// of 128 points, 60,000 of 8), so a scene that cycles through many shapes
+/// builds each once, as an engine keeps each shape's data; the relations,
+/// the shrinker and the fuzzer's pose mutations call the same hulls again
+/// and again, and every box has the same loops.
+#include <cstddef>
 #include <cstdint>
 
 #include "manifuzz/abi.h"
@@ -26,47 +30,41 @@ inline constexpr int kTopologyMaxVertices = 128;
 inline constexpr int kTopologyMaxFaces = 2 * kTopologyMaxVertices - 4;
 inline constexpr int kTopologyMaxEdges = 3 * kTopologyMaxVertices - 6;
 inline constexpr int kTopologyMaxSteps = 2 * kTopologyMaxEdges;
-/// Topologies a thread keeps. A returned topology stays valid until this
-/// many other hulls have been looked up on the thread; a generator call
-/// holds two.
-inline constexpr int kTopologySlots = 8;
+/// The ring's size, per thread.
+inline constexpr size_t kTopologyStoreBytes = size_t{64} << 20;
 
 /// An edge: the loop step v0 -> v1 (v0 < v1) of `face`; `twin` holds v1 -> v0.
 struct TopologyEdge {
-  int v0, v1, face, twin;
+  int32_t v0, v1, face, twin;
 };
 
+/// A topology as the store keeps it: this header, then its arrays.
 class HullTopology {
  public:
   /// The edges in SAT's order: faces in order, each loop's steps with v0 < v1.
   int edge_count() const { return edge_count_; }
-  const TopologyEdge& edge(int i) const { return edges_[i]; }
+  const TopologyEdge& edge(int i) const { return edges()[i]; }
   /// The face on the other side of step k -> k+1 of face f's loop.
-  int face_across_step(int f, int k) const { return across_[offsets_[f] + k]; }
+  int face_across_step(int f, int k) const { return words()[across_at_ + words()[f] + k]; }
   /// The vertices joined to v by an edge.
-  const int* neighbours_begin(int v) const { return neighbours_ + neighbour_offsets_[v]; }
-  const int* neighbours_end(int v) const { return neighbours_ + neighbour_offsets_[v + 1]; }
+  const int32_t* neighbours_begin(int v) const { return words() + neighbours_at_ + words()[neighbour_offsets_at_ + v]; }
+  const int32_t* neighbours_end(int v) const { return words() + neighbours_at_ + words()[neighbour_offsets_at_ + v + 1]; }
 
  private:
-  friend class TopologyCache;
-  bool same_loops(const mfz_hull& hull) const;
-  /// False when the hull does not fit or an edge is not in two faces once
-  /// each way.
-  bool build(const mfz_hull& hull);
+  friend class TopologyStore;
+  const int32_t* words() const { return reinterpret_cast<const int32_t*>(this + 1); }
+  const TopologyEdge* edges() const { return reinterpret_cast<const TopologyEdge*>(words() + edges_at_); }
 
-  int vertex_count_ = -1, face_count_ = -1, step_count_ = 0;
-  int32_t offsets_[kTopologyMaxFaces + 1];
-  int32_t loops_[kTopologyMaxSteps];
-  int across_[kTopologyMaxSteps];
-  TopologyEdge edges_[kTopologyMaxEdges];
-  int edge_count_ = 0;
-  int neighbour_offsets_[kTopologyMaxVertices + 1];
-  int neighbours_[kTopologyMaxSteps];
+  int32_t vertex_count_, face_count_, step_count_, edge_count_;
+  /// Where each array starts, in words after the header: the face offsets
+  /// (at 0) and loops come first, as the hull gave them.
+  int32_t loops_at_, across_at_, edges_at_, neighbour_offsets_at_, neighbours_at_, size_words_;
 };
 
-/// The topology of `hull` from this thread's cache, built on a miss; nullptr
+/// The topology of `hull` from this thread's store, built on a miss; nullptr
 /// when the hull has more than kTopologyMaxVertices vertices or its loops do
-/// not close into a polyhedron.
+/// not close into a polyhedron. A returned topology stays valid while two
+/// other hulls are looked up on the thread (a generator call holds two).
 const HullTopology* topology_of(const mfz_hull& hull);
 
 }  // namespace mfz
