@@ -22,11 +22,11 @@ fi
 
 # Chromium as root needs --no-sandbox; its own profile keeps runs apart.
 open_page() {  # open_page FILE -> the DOM after the scripts ran, on stdout
-  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --user-data-dir="$work/profile" \
+  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --user-data-dir="$work/profile" \
     --dump-dom "file://$1" 2>/dev/null
 }
 screenshot() {  # screenshot FILE PNG
-  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --user-data-dir="$work/profile" --hide-scrollbars \
+  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --user-data-dir="$work/profile" --hide-scrollbars \
     --window-size=1300,1500 --screenshot="$2" "file://$1" >/dev/null 2>&1
 }
 body_number() {  # body_number DOM NAME -> the body's data-NAME, or -1
