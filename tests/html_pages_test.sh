@@ -64,8 +64,10 @@ check_page() {  # check_page FILE CANVASES SVGS
 
 echo "== case views"
 "$manifuzz" render "$source/corpus/box_on_box.case" -o "$work/box_on_box.html"
+status=0
 "$manifuzz" render --generator "$plugins/libmanifuzz_tutorial.so" \
-  "$source/corpus/regressions/f1-frustum-side-planes-slope-inwards.case" -o "$work/f1_tutorial.html"
+  "$source/corpus/regressions/f1-frustum-side-planes-slope-inwards.case" -o "$work/f1_tutorial.html" || status=$?
+[ "$status" -eq 1 ] || { echo "FAIL: render of a failing case ended $status, not 1"; fail=1; }
 check_page "$work/box_on_box.html" 1 1
 check_page "$work/f1_tutorial.html" 1 1
 grep -q 'on-surface' "$work/f1_tutorial.html" || { echo "FAIL: the failing case's view does not name its check"; fail=1; }
