@@ -21,43 +21,36 @@ if [ -z "$browser" ]; then
 fi
 
 # Chromium as root needs --no-sandbox; its own profile keeps runs apart.
-open_page() {  # open_page FILE -> the DOM after the scripts ran, on stdout
-  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --user-data-dir="$work/profile" \
+# One launch reads the page after its scripts ran and takes its screenshot.
+open_page() {  # open_page FILE PNG -> the DOM on stdout, the screenshot in PNG
+  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run \
+    --user-data-dir="$work/profile" --hide-scrollbars --window-size=1300,1500 --screenshot="$2" \
     --dump-dom "file://$1" 2>/dev/null
-}
-screenshot() {  # screenshot FILE PNG
-  timeout 120 "$browser" --headless --no-sandbox --disable-gpu --disable-dev-shm-usage --no-first-run --user-data-dir="$work/profile" --hide-scrollbars \
-    --window-size=1300,1500 --screenshot="$2" "file://$1" >/dev/null 2>&1
 }
 body_number() {  # body_number DOM NAME -> the body's data-NAME, or -1
   sed -n "s/.*<body[^>]*data-$2=\"\\([0-9]*\\)\".*/\\1/p" <<<"$1" | head -1 | grep . || echo -1
 }
 
-# page_drew FILE CANVASES SVGS: true when the page drew at least that many
-# canvases (with ink) and SVGs with elements, and recorded no script error.
+# page_drew FILE CANVASES SVGS PNG: true when the page drew at least that
+# many canvases (with ink) and SVGs with elements, recorded no script error,
+# and its screenshot is not blank.
 page_drew() {
-  local dom drawn inked svgs
-  dom=$(open_page "$1")
+  local dom drawn inked svgs bytes
+  dom=$(open_page "$1" "$4")
   if grep -q '<html[^>]*data-script-error=' <<<"$dom"; then
     echo "  $(basename "$1"): script error: $(sed -n 's/.*<html[^>]*data-script-error="\([^"]*\)".*/\1/p' <<<"$dom" | head -1)"
     return 1
   fi
   drawn=$(body_number "$dom" drawn) inked=$(body_number "$dom" inked) svgs=$(body_number "$dom" svgs)
-  echo "  $(basename "$1"): canvases $drawn, inked pixels $inked, SVGs with elements $svgs"
-  [ "$drawn" -ge "$2" ] && [ "$inked" -ge $((2000 * $2)) ] && [ "$svgs" -ge "$3" ]
+  bytes=$(stat -c %s "$4" 2>/dev/null || echo 0)
+  echo "  $(basename "$1"): canvases $drawn, inked pixels $inked, SVGs with elements $svgs, screenshot $bytes bytes"
+  [ "$drawn" -ge "$2" ] && [ "$inked" -ge $((2000 * $2)) ] && [ "$svgs" -ge "$3" ] && [ "$bytes" -ge 20000 ]
 }
 
 fail=0
 check_page() {  # check_page FILE CANVASES SVGS
-  if ! page_drew "$@"; then
+  if ! page_drew "$1" "$2" "$3" "$out/$(basename "$1" .html).png"; then
     echo "FAIL: $1 did not draw"
-    fail=1
-  fi
-  screenshot "$1" "$out/$(basename "$1" .html).png"
-  local bytes
-  bytes=$(stat -c %s "$out/$(basename "$1" .html).png" 2>/dev/null || echo 0)
-  if [ "$bytes" -lt 20000 ]; then
-    echo "FAIL: the screenshot of $1 is $bytes bytes: blank"
     fail=1
   fi
 }
@@ -91,7 +84,7 @@ echo "== the test fails on broken pages"
 sed 's|<h1>|<script>window.noSuchObject.call();</script><h1>|' "$work/box_on_box.html" > "$work/script_error.html"
 sed 's|class="case-data">[^<]*<|class="case-data">[]<|' "$work/box_on_box.html" > "$work/no_data.html"
 for broken in script_error no_data; do
-  if page_drew "$work/$broken.html" 1 1; then
+  if page_drew "$work/$broken.html" 1 1 "$work/$broken.png"; then
     echo "FAIL: the broken page $broken passed"
     fail=1
   fi

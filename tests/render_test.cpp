@@ -7,7 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
+#include <cstdlib>
 #include <sstream>
 
 #include "case_pictures.h"
@@ -28,18 +28,49 @@ struct SvgShape {
   double width = 0, height = 0;
 };
 
+// The numbers in a list such as "1.00,2.00 3.00,4.00".
 std::vector<double> numbers_in(const std::string& text) {
   std::vector<double> out;
-  static const std::regex number(R"(-?[0-9]+(\.[0-9]+)?)");
-  for (auto it = std::sregex_iterator(text.begin(), text.end(), number); it != std::sregex_iterator(); ++it)
-    out.push_back(std::stod(it->str()));
+  for (const char* at = text.c_str(); *at;) {
+    char* end = nullptr;
+    const double x = std::strtod(at, &end);
+    if (end == at) ++at;
+    else out.push_back(x), at = end;
+  }
   return out;
 }
 
 std::string attribute(const std::string& attributes, const std::string& name) {
-  const std::regex pattern("(^|\\s)" + name + "=\"([^\"]*)\"");
-  std::smatch m;
-  return std::regex_search(attributes, m, pattern) ? m[2].str() : "";
+  const std::string key = " " + name + "=\"";
+  const size_t at = (" " + attributes).find(key);
+  if (at == std::string::npos) return "";
+  const size_t begin = at + key.size() - 1;  // in `attributes`, past the quote
+  return attributes.substr(begin, attributes.find('"', begin) - begin);
+}
+
+struct Tag {
+  std::string name, attributes;
+  bool closing = false, self_closing = false;
+};
+
+// The tags of an XML text in order (text between them is skipped).
+std::vector<Tag> tags_of(const std::string& xml) {
+  std::vector<Tag> tags;
+  for (size_t at = xml.find('<'); at != std::string::npos; at = xml.find('<', at + 1)) {
+    const size_t end = xml.find('>', at);
+    if (end == std::string::npos) break;
+    std::string inside = xml.substr(at + 1, end - at - 1);
+    Tag t;
+    t.closing = !inside.empty() && inside[0] == '/';
+    if (t.closing) inside.erase(0, 1);
+    t.self_closing = !inside.empty() && inside.back() == '/';
+    if (t.self_closing) inside.pop_back();
+    const size_t space = inside.find(' ');
+    t.name = inside.substr(0, space);
+    t.attributes = space == std::string::npos ? "" : inside.substr(space + 1);
+    tags.push_back(t);
+  }
+  return tags;
 }
 
 // Reads the SVG's elements in order: the stack of open tags, and for each
@@ -50,10 +81,9 @@ SvgShape shape_of(const std::string& svg) {
   std::vector<std::string> open;
   double left = 0, top = 0, size = -1;  // the current view's square; size < 0: none yet
   bool in_view = false;
-  static const std::regex tag(R"(<(/?)([a-zA-Z]+)([^>]*?)(/?)>)");
-  for (auto it = std::sregex_iterator(svg.begin(), svg.end(), tag); it != std::sregex_iterator(); ++it) {
-    const std::string name = (*it)[2], attributes = (*it)[3];
-    const bool closing = (*it)[1] == "/", self_closing = (*it)[4] == "/";
+  for (const Tag& tag : tags_of(svg)) {
+    const std::string &name = tag.name, &attributes = tag.attributes;
+    const bool closing = tag.closing, self_closing = tag.self_closing;
     if (closing) {
       if (open.empty() || open.back() != name) s.balanced = false;
       else open.pop_back();
