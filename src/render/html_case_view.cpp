@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "harness/report.h"
+#include "render/markup.h"
 #include "render/case_viewer_script.h"
 #include "render/svg_picture.h"
 
@@ -52,25 +53,9 @@ void picture_json(Json& json, const CasePicture& p) {
   json.end_array().end_object();
 }
 
-// JSON inside a script element: "</" would close the element early.
-std::string script_safe(std::string text) {
-  for (size_t at = text.find("</"); at != std::string::npos; at = text.find("</", at + 3)) text.replace(at, 2, "<\\/");
-  return text;
-}
 
 }  // namespace
 
-std::string html_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else out += c;
-  }
-  return out;
-}
 
 void pictures_json(Json& json, const std::vector<CasePicture>& runs) {
   json.begin_array();
@@ -94,12 +79,12 @@ std::string html_case_view(const std::vector<CasePicture>& runs, const std::stri
   Json json;
   pictures_json(json, runs);
   std::string page;
-  page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escaped(title) +
+  page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + markup_escaped(title) +
           "</title>\n<style>\nbody { font-family: sans-serif; margin: 16px; color: #222; }\n"
           ".case-views { display: flex; flex-wrap: wrap; gap: 24px; }\ncanvas { border: 1px solid #bbb; cursor: grab; }\n"
           "button { margin: 2px 4px 6px 0; }\npre { font-size: 12px; }\n</style>\n" + error_trap_script() +
           "</head>\n<body>\n";
-  page += "<h1>" + html_escaped(title) + "</h1>\n";
+  page += "<h1>" + markup_escaped(title) + "</h1>\n";
   page += "<p>Drag to rotate, wheel to zoom; the buttons return to the contact frame's views. "
           "The static picture (SVG) follows.</p>\n";
   page += "<div class=\"case-views\" data-case-views=\"0\"></div>\n";

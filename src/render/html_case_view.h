@@ -27,7 +27,4 @@ const std::string& case_viewer_script();
 /// after the viewer ran, is recorded on <html> as data-script-error.
 const std::string& error_trap_script();
 
-/// `text` made safe inside an HTML element or attribute.
-std::string html_escaped(const std::string& text);
-
 }  // namespace mfz

@@ -10,6 +10,7 @@
 
 #include "harness/report.h"
 #include "render/html_case_view.h"
+#include "render/markup.h"
 #include "render/svg_picture.h"
 
 namespace mfz {
@@ -54,7 +55,7 @@ std::string bar_chart(const std::map<std::string, long long>& table) {
   double y = 2;
   for (const auto& [key, n] : rows) {
     const double w = bars * static_cast<double>(n) / static_cast<double>(most);
-    svg += "<text x=\"0\" y=\"" + fixed(y + 13) + "\" font-size=\"12\">" + html_escaped(key) + "</text>";
+    svg += "<text x=\"0\" y=\"" + fixed(y + 13) + "\" font-size=\"12\">" + markup_escaped(key) + "</text>";
     svg += "<rect x=\"" + fixed(label) + "\" y=\"" + fixed(y + 2) + "\" width=\"" + fixed(std::max(w, 1.0)) +
            "\" height=\"" + fixed(row - 5) + "\" fill=\"#5b8bd6\"/>";
     svg += "<text x=\"" + fixed(label + w + 6) + "\" y=\"" + fixed(y + 13) + "\" font-size=\"12\">" + std::to_string(n) +
@@ -77,7 +78,7 @@ std::string margin_histogram(const CheckMargins& m) {
            "\" height=\"" + fixed(h) + "\" fill=\"" + (k >= kMarginBins - 2 ? "#d0182b" : "#5b8bd6") + "\"><title>" +
            margin_bin_names()[k] + ": " + std::to_string(m.bins[k]) + "</title></rect>";
     svg += "<text x=\"" + fixed(k * width + width / 2) + "\" y=\"" + fixed(height + 12) +
-           "\" font-size=\"9\" text-anchor=\"middle\">" + html_escaped(margin_bin_names()[k]) + "</text>";
+           "\" font-size=\"9\" text-anchor=\"middle\">" + markup_escaped(margin_bin_names()[k]) + "</text>";
   }
   return svg + "</svg>";
 }
@@ -101,7 +102,7 @@ std::string time_chart(const std::vector<ProgressSample>& samples, Value value, 
   svg += "<text x=\"" + fixed(left - 4) + "\" y=\"" + fixed(h + 5) + "\" font-size=\"11\" text-anchor=\"end\">0</text>";
   svg += "<text x=\"" + fixed(left + w) + "\" y=\"" + fixed(h + bottom + 5) + "\" font-size=\"11\" text-anchor=\"end\">" +
          general(t_max) + " s</text>";
-  svg += "<text x=\"" + fixed(left + 6) + "\" y=\"14\" font-size=\"11\" fill=\"#555\">" + html_escaped(unit) + "</text>\n";
+  svg += "<text x=\"" + fixed(left + 6) + "\" y=\"14\" font-size=\"11\" fill=\"#555\">" + markup_escaped(unit) + "</text>\n";
   svg += "<polyline fill=\"none\" stroke=\"#2f6fd0\" stroke-width=\"1.6\" points=\"";
   for (const auto& [t, y] : points)
     svg += fixed(left + w * t / t_max) + "," + fixed(5 + h - h * y / y_max) + " ";
@@ -133,7 +134,7 @@ std::string coverage_chart(const RunReport& r) {
 std::string summary_section(const RunReport& r) {
   std::string html = "<h2>Summary</h2>\n<table class=\"summary\">\n";
   for (const auto& [key, value] : r.summary)
-    html += "<tr><th>" + html_escaped(key) + "</th><td>" + html_escaped(value) + "</td></tr>\n";
+    html += "<tr><th>" + markup_escaped(key) + "</th><td>" + markup_escaped(value) + "</td></tr>\n";
   html += "<tr><th>findings</th><td>" + std::to_string(r.findings.size()) + "</td></tr>\n</table>\n";
   return html;
 }
@@ -142,7 +143,7 @@ std::string coverage_section(const RunReport& r) {
   std::string html = "<h2>What the run covered</h2>\n";
   if (r.statistics.tables().empty()) html += "<p>(no cases recorded)</p>\n";
   for (const auto& [table, rows] : r.statistics.tables())
-    html += "<h3>" + html_escaped(table) + "</h3>\n" + bar_chart(rows);
+    html += "<h3>" + markup_escaped(table) + "</h3>\n" + bar_chart(rows);
   return html;
 }
 
@@ -153,7 +154,7 @@ std::string margins_section(const RunReport& r) {
       "<table class=\"margins\">\n<tr><th>check</th><th>measured</th><th>skipped</th><th>failed</th><th>closest</th>"
       "<th>error / tolerance</th></tr>\n";
   for (const auto& [name, m] : r.statistics.margins())
-    html += "<tr><td>" + html_escaped(name) + "</td><td>" + std::to_string(m.measured) + "</td><td>" +
+    html += "<tr><td>" + markup_escaped(name) + "</td><td>" + std::to_string(m.measured) + "</td><td>" +
             std::to_string(m.skipped) + "</td><td>" + std::to_string(m.failed) + "</td><td>" + general(m.closest) +
             "</td><td>" + margin_histogram(m) + "</td></tr>\n";
   return html + "</table>\n";
@@ -168,23 +169,21 @@ std::string progress_section(const RunReport& r) {
 }
 
 std::string finding_section(const ReportedFinding& f, int index) {
-  std::string html = "<section class=\"finding\">\n<h3>" + std::to_string(index + 1) + ". " + html_escaped(f.name) +
-                     "</h3>\n<p>" + html_escaped(f.detail) + "</p>\n";
-  if (!f.case_path.empty()) html += "<p>case file: <code>" + html_escaped(f.case_path) + "</code></p>\n";
-  if (!f.replay_command.empty()) html += "<p>replay: <code>" + html_escaped(f.replay_command) + "</code></p>\n";
+  std::string html = "<section class=\"finding\">\n<h3>" + std::to_string(index + 1) + ". " + markup_escaped(f.name) +
+                     "</h3>\n<p>" + markup_escaped(f.detail) + "</p>\n";
+  if (!f.case_path.empty()) html += "<p>case file: <code>" + markup_escaped(f.case_path) + "</code></p>\n";
+  if (!f.replay_command.empty()) html += "<p>replay: <code>" + markup_escaped(f.replay_command) + "</code></p>\n";
   if (!f.pictures.empty()) {
     Json json;
     pictures_json(json, f.pictures);
-    std::string data = json.str();
-    for (size_t at = data.find("</"); at != std::string::npos; at = data.find("</", at + 3)) data.replace(at, 2, "<\\/");
-    html += "<div class=\"case-views\"></div>\n<script type=\"application/json\" class=\"case-data\">" + data +
-            "</script>\n";
+    html += "<div class=\"case-views\"></div>\n<script type=\"application/json\" class=\"case-data\">" +
+            script_safe(json.str()) + "</script>\n";
     html += "<details><summary>static picture (SVG)</summary>\n" + svg_of(f.pictures) + "</details>\n";
   } else if (!f.note.empty()) {
-    html += "<p>(" + html_escaped(f.note) + ")</p>\n";
+    html += "<p>(" + markup_escaped(f.note) + ")</p>\n";
   }
   if (!f.case_text.empty())
-    html += "<details><summary>case file</summary>\n<pre>" + html_escaped(f.case_text) + "</pre></details>\n";
+    html += "<details><summary>case file</summary>\n<pre>" + markup_escaped(f.case_text) + "</pre></details>\n";
   return html + "</section>\n";
 }
 
@@ -192,14 +191,14 @@ std::string finding_section(const ReportedFinding& f, int index) {
 
 std::string html_run_report(const RunReport& r) {
   std::string page =
-      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escaped(r.title) +
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + markup_escaped(r.title) +
       "</title>\n<style>\nbody { font-family: sans-serif; margin: 16px; color: #222; max-width: 1400px; }\n"
       "table { border-collapse: collapse; } th, td { border-bottom: 1px solid #ddd; padding: 3px 10px; text-align: left; "
       "vertical-align: middle; }\n.case-views { display: flex; flex-wrap: wrap; gap: 24px; }\n"
       "canvas { border: 1px solid #bbb; cursor: grab; }\npre { font-size: 12px; background: #f6f6f6; padding: 6px; }\n"
       "section.finding { border-top: 2px solid #d0182b; margin-top: 18px; }\n</style>\n" + error_trap_script() +
       "</head>\n<body>\n";
-  page += "<h1>" + html_escaped(r.title) + "</h1>\n";
+  page += "<h1>" + markup_escaped(r.title) + "</h1>\n";
   page += summary_section(r);
   page += "<h2>Findings</h2>\n";
   if (r.findings.empty()) page += "<p>None.</p>\n";

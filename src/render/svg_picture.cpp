@@ -1,5 +1,7 @@
 #include "render/svg_picture.h"
 
+#include "render/markup.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -27,17 +29,6 @@ std::string number(double x) {
   return std::string(text) == "-0.00" ? "0.00" : text;
 }
 
-std::string escaped(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '&') out += "&amp;";
-    else if (c == '<') out += "&lt;";
-    else if (c == '>') out += "&gt;";
-    else if (c == '"') out += "&quot;";
-    else if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out;
-}
 
 // ---- one view: a projection of world space onto a square of the SVG ----
 
@@ -171,7 +162,7 @@ class Svg {
   }
   void text(double x, double y, const std::string& s, const std::string& style = "") {
     out_ += "<text x=\"" + number(x) + "\" y=\"" + number(y) + "\"" + (style.empty() ? "" : " " + style) + ">" +
-            escaped(s) + "</text>\n";
+            markup_escaped(s) + "</text>\n";
   }
   const std::string& str() const { return out_; }
 
@@ -291,7 +282,7 @@ void draw_broken_contact(Svg& svg, const CasePicture& p, const View& v) {
 }
 
 void draw_view(Svg& svg, const CasePicture& p, const View& v) {
-  svg.raw("<g class=\"view\" data-view=\"" + escaped(v.name) + "\">\n");
+  svg.raw("<g class=\"view\" data-view=\"" + markup_escaped(v.name) + "\">\n");
   svg.raw("<rect x=\"" + number(v.left) + "\" y=\"" + number(v.top) + "\" width=\"" + number(kSvgViewSize) +
           "\" height=\"" + number(kSvgViewSize) + "\" fill=\"#fcfcfc\" stroke=\"#bbb\"/>\n");
   draw_hull_faces(svg, p, v);
@@ -331,7 +322,7 @@ void draw_key(Svg& svg, double x, double y) {
 }
 
 void draw_panel(Svg& svg, const CasePicture& p, double left) {
-  svg.raw("<g class=\"run\" data-title=\"" + escaped(p.title) + "\">\n");
+  svg.raw("<g class=\"run\" data-title=\"" + markup_escaped(p.title) + "\">\n");
   svg.text(left + kGap, kGap + 12, p.title, "font-size=\"14\" font-weight=\"bold\"");
   std::vector<View> views = views_of(p);
   const std::vector<Vec3> points = points_of_interest(p);
