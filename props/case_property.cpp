@@ -7,7 +7,6 @@
 #include "relations.h"
 
 namespace mfz::props {
-namespace {
 
 CaseTags tags_of(const Scene& s, const OracleAnswers& o, const mfz_manifold& m) {
   CaseTags tags;
@@ -23,6 +22,8 @@ CaseTags tags_of(const Scene& s, const OracleAnswers& o, const mfz_manifold& m) 
   else tags.contact_kind = "no-contacts";
   return tags;
 }
+
+namespace {
 
 // The case's `profile` line, read whole (it replaces the selection's); the
 // selection's own when the line is absent or --profile gave one.

@@ -39,6 +39,10 @@ struct CaseTags {
   double depth_over_l = 0;  ///< the exact depth in units of L (negative: the gap)
 };
 
+/// What a case covered: its contact kind (from the oracles and the
+/// manifold), whether it touches or ties, its exact depth.
+CaseTags tags_of(const Scene& s, const OracleAnswers& o, const mfz_manifold& m);
+
 /// How much a relation asks (docs/contract.md, "Ties"): `contract` compares
 /// what the geometry determines; `strict` asks for one canonical answer even
 /// in a tie, and adds the triangulated-faces relation.

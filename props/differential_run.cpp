@@ -204,7 +204,8 @@ const std::vector<std::string>& disagreement_kinds() {
   return kinds;
 }
 
-std::optional<Disagreement> compare_generators(const CaseFile& c, DiffSide& first, DiffSide& second, bool& invalid) {
+std::optional<Disagreement> compare_generators(const CaseFile& c, DiffSide& first, DiffSide& second, bool& invalid,
+                                               RunStatistics* statistics) {
   invalid = false;
   SceneBuild built = make_scene(c);
   if (!built.scene) {
@@ -231,6 +232,11 @@ std::optional<Disagreement> compare_generators(const CaseFile& c, DiffSide& firs
     a->depth_allowance = depth_allowance(scene, *a->profile, oracles.exact.signed_depth);
   }
   scene.precision_epsilon = coarser;
+  if (statistics) {
+    statistics->count("contact kind", tags_of(scene, oracles, a1.m).contact_kind);
+    statistics->add_verdict(a1.verdict, "first: ");
+    statistics->add_verdict(a2.verdict, "second: ");
+  }
   if (auto d = compare_colliding(scene, oracles, a1, a2)) return d;
   if (!a1.m.colliding || !a2.m.colliding || !oracles.exact.colliding) return std::nullopt;
   if (auto d = compare_depth(scene, oracles, a1, a2)) return d;
@@ -302,7 +308,7 @@ std::optional<DiffResult> run_diff(const DiffOptions& options, std::ostream& log
     if (interrupted()) break;
     const GeneratedCase generated = gen(random.split(), static_cast<int>(index % 100)).value();
     bool invalid = false;
-    const auto d = compare_generators(generated.file, first, second, invalid);
+    const auto d = compare_generators(generated.file, first, second, invalid, &result.statistics);
     if (invalid) {
       ++result.invalid;
       continue;

@@ -42,7 +42,10 @@ const std::vector<std::string>& disagreement_kinds();
 /// profiles; a disagreement whose `sides_with` is both when they differ
 /// where the oracles confirm each (a tie, which a run does not count); `invalid` is set (and nullopt returned) for a case that is no
 /// valid input, or that one of the profiles does not resolve.
-std::optional<Disagreement> compare_generators(const CaseFile& c, DiffSide& first, DiffSide& second, bool& invalid);
+/// With `statistics`, the case's contact kind and both answers' margins
+/// (each check under "first: " and "second: ") are counted there.
+std::optional<Disagreement> compare_generators(const CaseFile& c, DiffSide& first, DiffSide& second, bool& invalid,
+                                               RunStatistics* statistics = nullptr);
 
 struct DiffOptions {
   std::string generator, against;

@@ -288,6 +288,8 @@ check_that "check --jobs --report merges every job's margins" grep -q '<td>finit
 expect 1 'report in' -- "$manifuzz" check --generator "$plugin_dir/libmfz_test_crashing.so" --cases 50 --seed 3 --out "$scratch/crash" --quiet --report "$scratch/report-crash"
 check_that "check --report shows the finding with its replay command" sh -c "grep -q 'manifuzz replay --generator $plugin_dir/libmfz_test_crashing.so' '$scratch/report-crash/report.html'"
 expect_one_line_error 'cannot write the report' -- "$manifuzz" check --cases 5 --report /proc/version/r
+expect 1 'report in' -- "$manifuzz" diff --generator builtin --against tutorial --cases 100 --seed 3 --out "$scratch/diff-report-cases" --quiet --report "$scratch/report-diff"
+check_that "diff --report counts contact kinds and both answers' margins" sh -c "grep -q '<h3>contact kind</h3>' '$scratch/report-diff/report.html' && grep -q '<td>first: depth-exact</td>' '$scratch/report-diff/report.html' && grep -q '<td>second: depth-exact</td>' '$scratch/report-diff/report.html'"
 
 echo "$((checks - failures)) passed, $failures failed"
 [ "$failures" -eq 0 ]

@@ -26,9 +26,9 @@ int margin_bin(double error, double tolerance) {
   return kMarginBins - 1;
 }
 
-void RunStatistics::add_verdict(const Verdict& verdict) {
+void RunStatistics::add_verdict(const Verdict& verdict, const std::string& prefix) {
   for (const InvariantCheck& c : verdict.checks) {
-    CheckMargins& m = margins_[c.name];
+    CheckMargins& m = margins_[prefix + c.name];
     if (c.status == CheckStatus::skipped || c.status == CheckStatus::oracle_disagreement) {
       ++m.skipped;
       continue;

@@ -37,8 +37,9 @@ struct ProgressSample {
 class RunStatistics {
  public:
   void count(const std::string& table, const std::string& key) { ++tables_[table][key]; }
-  /// Every measured check of a verdict into its histogram.
-  void add_verdict(const Verdict& verdict);
+  /// Every measured check of a verdict into its histogram, under the
+  /// check's name after `prefix` (diff: whose answer it was).
+  void add_verdict(const Verdict& verdict, const std::string& prefix = "");
   void sample(double seconds, long long total, int coverage = -1) { samples_.push_back({seconds, total, coverage}); }
 
   const std::map<std::string, std::map<std::string, long long>>& tables() const { return tables_; }
