@@ -164,6 +164,32 @@ TEST(HullScaling, ScalesVerticesAndDiameterAndKeepsTheFaces) {
   EXPECT_NEAR(s.face_offset(0), 2 * h.face_offset(0), 1e-15);
 }
 
+TEST(HullMeasures, ShortestEdgeAndSharpestCornerOfABox) {
+  const Hull h = *build_hull(box_points(1, 2, 3)).hull;
+  EXPECT_EQ(h.shortest_edge(), 2);  // box_points gives half-extents
+  EXPECT_EQ(h.sharpest_corner(), 1);  // every corner square
+  const Hull s = h.scaled(0.5);
+  EXPECT_EQ(s.shortest_edge(), 1) << "a scaled hull measures its own shape";
+  EXPECT_EQ(h.renumbered().shortest_edge(), 2);
+}
+
+TEST(HullMeasures, TheSharpestCornerIsTheSineOfTheSmallestFaceAngle) {
+  // A wedge whose slanted faces meet the base at corners of 0.1 rad.
+  const double t = std::tan(0.1);
+  const Hull h = *build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, t}, {0, 1, t}}).hull;
+  EXPECT_NEAR(h.sharpest_corner(), std::sin(0.1), 1e-12);
+}
+
+TEST(HullCopies, ShareTheShapeAndAHullMovedFromKeepsIt) {
+  Hull h = *build_hull(box_points(1, 1, 1)).hull;
+  const Hull copy = h;
+  EXPECT_EQ(copy.view().vertices, h.view().vertices) << "a copy shares the arrays";
+  const Hull moved = std::move(h);
+  EXPECT_EQ(h.vertex_count(), 8);  // NOLINT(bugprone-use-after-move): the point of the test
+  EXPECT_EQ(moved.vertex_count(), 8);
+  EXPECT_EQ(h.scaled(2).view().vertices == h.view().vertices, false) << "scaling copies the arrays";
+}
+
 TEST(HullValidation, RejectsAFlippedFaceLoop) {
   // A tetrahedron with one face's loop reversed: that edge pair no longer matches.
   const std::vector<Vec3> v = test::tetrahedron_points();

@@ -31,28 +31,9 @@ namespace {
 
 std::vector<Vec3> posed(const Hull& hull, const Pose& pose) {
   std::vector<Vec3> out;
+  out.reserve(static_cast<size_t>(hull.vertex_count()));
   for (int i = 0; i < hull.vertex_count(); ++i) out.push_back(pose.to_world(hull.vertex(i)));
   return out;
-}
-
-double shortest_edge_of(const Hull& hull) {
-  double shortest = std::numeric_limits<double>::infinity();
-  for (const HullEdge& e : hull.edges()) shortest = std::min(shortest, (hull.vertex(e.v1) - hull.vertex(e.v0)).norm());
-  return shortest;
-}
-
-// The sine of the smallest angle between two edges meeting at a corner of a
-// face (in local space: a rigid motion changes no angle).
-double sharpest_corner_of(const Hull& hull) {
-  double sharpest = 1;
-  for (int f = 0; f < hull.face_count(); ++f)
-    for (int k = 0, size = hull.face_size(f); k < size; ++k) {
-      const Vec3 corner = hull.vertex(hull.face_vertex(f, k));
-      const Vec3 before = (hull.vertex(hull.face_vertex(f, (k + size - 1) % size)) - corner).normalized();
-      const Vec3 after = (hull.vertex(hull.face_vertex(f, (k + 1) % size)) - corner).normalized();
-      sharpest = std::min(sharpest, before.cross(after).norm());
-    }
-  return sharpest;
 }
 
 double largest_coordinate(const std::vector<Vec3>& points) {
@@ -118,8 +99,8 @@ Scene posed_scene(Hull a, const Pose& pose_a, Hull b, const Pose& pose_b) {
   scene.pose_a.orientation = unit(scene.pose_a.orientation);
   scene.pose_b.orientation = unit(scene.pose_b.orientation);
   scene.scale = std::max(scene.hull_a.diameter(), scene.hull_b.diameter());
-  scene.shortest_edge = std::min(shortest_edge_of(scene.hull_a), shortest_edge_of(scene.hull_b));
-  scene.sharpest_corner = std::min(sharpest_corner_of(scene.hull_a), sharpest_corner_of(scene.hull_b));
+  scene.shortest_edge = std::min(scene.hull_a.shortest_edge(), scene.hull_b.shortest_edge());
+  scene.sharpest_corner = std::min(scene.hull_a.sharpest_corner(), scene.hull_b.sharpest_corner());
   scene.world_a = posed(scene.hull_a, scene.pose_a);
   scene.world_b = posed(scene.hull_b, scene.pose_b);
   scene.world_extent = std::max(largest_coordinate(scene.world_a), largest_coordinate(scene.world_b));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -108,52 +109,76 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
 
 }  // namespace
 
+// The sine of the smallest angle between two edges meeting at a corner of a
+// face is in local space: a rigid motion changes no angle.
+void Hull::measure_shape() {
+  Shape& shape = *shape_;
+  shape.diameter = diameter_of(shape.vertices);
+  shape.shortest_edge = std::numeric_limits<double>::infinity();
+  for (const HullEdge& e : shape.edges)
+    shape.shortest_edge = std::min(shape.shortest_edge, (vertex(e.v1) - vertex(e.v0)).norm());
+  shape.sharpest_corner = 1;
+  for (int f = 0; f < face_count(); ++f)
+    for (int k = 0, size = face_size(f); k < size; ++k) {
+      const Vec3 corner = vertex(face_vertex(f, k));
+      const Vec3 before = (vertex(face_vertex(f, (k + size - 1) % size)) - corner).normalized();
+      const Vec3 after = (vertex(face_vertex(f, (k + 1) % size)) - corner).normalized();
+      shape.sharpest_corner = std::min(shape.sharpest_corner, before.cross(after).norm());
+    }
+}
+
 mfz_hull Hull::view() const {
-  return {vertex_count(), vertices_.data(), face_count(), face_offsets_.data(), face_vertices_.data(),
-          face_normals_.data()};
+  const Shape& shape = *shape_;
+  return {vertex_count(), shape.vertices.data(), face_count(), shape.face_offsets.data(), shape.face_vertices.data(),
+          shape.face_normals.data()};
 }
 
 Hull Hull::scaled(double s) const {
-  Hull out = *this;
-  for (mfz_vec3& v : out.vertices_) v = to_abi(Vec3(s * to_vec(v)));
-  out.diameter_ = s * diameter_;
+  Hull out;
+  *out.shape_ = *shape_;
+  for (mfz_vec3& v : out.shape_->vertices) v = to_abi(Vec3(s * to_vec(v)));
+  out.measure_shape();
+  out.shape_->diameter = s * diameter();
   return out;
 }
 
 Hull Hull::renumbered() const {
   const int last = vertex_count() - 1, faces = face_count();
   Hull out;
-  out.vertices_.assign(vertices_.rbegin(), vertices_.rend());
-  out.face_normals_.assign(face_normals_.rbegin(), face_normals_.rend());
-  out.face_offsets_.push_back(0);
+  Shape& shape = *out.shape_;
+  shape.vertices.assign(shape_->vertices.rbegin(), shape_->vertices.rend());
+  shape.face_normals.assign(shape_->face_normals.rbegin(), shape_->face_normals.rend());
+  shape.face_offsets.push_back(0);
   for (int f = faces - 1; f >= 0; --f) {
     const int n = face_size(f);
-    for (int k = 1; k <= n; ++k) out.face_vertices_.push_back(last - face_vertex(f, k % n));
-    out.face_offsets_.push_back(static_cast<int32_t>(out.face_vertices_.size()));
+    for (int k = 1; k <= n; ++k) shape.face_vertices.push_back(last - face_vertex(f, k % n));
+    shape.face_offsets.push_back(static_cast<int32_t>(shape.face_vertices.size()));
   }
-  for (const HullEdge& e : edges_)
-    out.edges_.push_back({last - e.v0, last - e.v1, faces - 1 - e.face_left, faces - 1 - e.face_right});
-  out.diameter_ = diameter_;
+  for (const HullEdge& e : edges())
+    shape.edges.push_back({last - e.v0, last - e.v1, faces - 1 - e.face_left, faces - 1 - e.face_right});
+  out.measure_shape();
+  shape.diameter = diameter();
   return out;
 }
 
 Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,
                       std::vector<Vec3> normals) {
   Hull hull;
+  Shape& shape = *hull.shape_;
   size_t steps_total = 0;
   for (const auto& loop : loops) steps_total += loop.size();
-  hull.vertices_.reserve(vertices.size());
-  hull.face_offsets_.reserve(loops.size() + 1);
-  hull.face_vertices_.reserve(steps_total);
-  hull.face_normals_.reserve(normals.size());
-  hull.edges_.reserve(steps_total / 2);
-  for (const Vec3& v : vertices) hull.vertices_.push_back(to_abi(v));
-  hull.face_offsets_.push_back(0);
+  shape.vertices.reserve(vertices.size());
+  shape.face_offsets.reserve(loops.size() + 1);
+  shape.face_vertices.reserve(steps_total);
+  shape.face_normals.reserve(normals.size());
+  shape.edges.reserve(steps_total / 2);
+  for (const Vec3& v : vertices) shape.vertices.push_back(to_abi(v));
+  shape.face_offsets.push_back(0);
   for (const auto& loop : loops) {
-    hull.face_vertices_.insert(hull.face_vertices_.end(), loop.begin(), loop.end());
-    hull.face_offsets_.push_back(static_cast<int32_t>(hull.face_vertices_.size()));
+    shape.face_vertices.insert(shape.face_vertices.end(), loop.begin(), loop.end());
+    shape.face_offsets.push_back(static_cast<int32_t>(shape.face_vertices.size()));
   }
-  for (const Vec3& n : normals) hull.face_normals_.push_back(to_abi(n));
+  for (const Vec3& n : normals) shape.face_normals.push_back(to_abi(n));
   // Pair the loop steps by their undirected key: sorting beats a map here,
   // and every relation builds hulls. Edges keep the order of their first step.
   struct Step {
@@ -162,7 +187,7 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
   };
   std::vector<Step> steps;
   steps.reserve(steps_total);
-  const long long base = static_cast<long long>(hull.vertices_.size()) + 1;
+  const long long base = static_cast<long long>(shape.vertices.size()) + 1;
   for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
     const auto& loop = loops[f];
     for (size_t k = 0; k < loop.size(); ++k) {
@@ -182,8 +207,8 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
   }
   std::sort(first_seen.begin(), first_seen.end(),
             [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (const auto& [order, edge] : first_seen) hull.edges_.push_back(edge);
-  hull.diameter_ = diameter_of(hull.vertices_);
+  for (const auto& [order, edge] : first_seen) shape.edges.push_back(edge);
+  hull.measure_shape();
   return hull;
 }
 

@@ -3,6 +3,7 @@
 /// Convex hulls as the contract defines them: extreme vertices only, maximal
 /// planar faces as counter-clockwise loops (seen from outside) with outward
 /// unit normals, every edge shared by two faces.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,19 +24,29 @@ struct HullEdge {
 /// `view()` hands to a generator through the C ABI.
 class Hull {
  public:
-  int vertex_count() const { return static_cast<int>(vertices_.size()); }
-  int face_count() const { return static_cast<int>(face_normals_.size()); }
-  int edge_count() const { return static_cast<int>(edges_.size()); }
-  Vec3 vertex(int i) const { return to_vec(vertices_[i]); }
-  Vec3 face_normal(int f) const { return to_vec(face_normals_[f]); }
+  Hull() = default;
+  // Copies share the shape; there is no move, so that a hull moved from
+  // still holds its shape.
+  Hull(const Hull&) = default;
+  Hull& operator=(const Hull&) = default;
+
+  int vertex_count() const { return static_cast<int>(shape_->vertices.size()); }
+  int face_count() const { return static_cast<int>(shape_->face_normals.size()); }
+  int edge_count() const { return static_cast<int>(shape_->edges.size()); }
+  Vec3 vertex(int i) const { return to_vec(shape_->vertices[i]); }
+  Vec3 face_normal(int f) const { return to_vec(shape_->face_normals[f]); }
   /// The face plane's offset: normal . x = offset for x on face f.
   double face_offset(int f) const { return face_normal(f).dot(vertex(face_vertex(f, 0))); }
-  int face_size(int f) const { return face_offsets_[f + 1] - face_offsets_[f]; }
-  int face_vertex(int f, int k) const { return face_vertices_[face_offsets_[f] + k]; }
-  const std::vector<HullEdge>& edges() const { return edges_; }
+  int face_size(int f) const { return shape_->face_offsets[f + 1] - shape_->face_offsets[f]; }
+  int face_vertex(int f, int k) const { return shape_->face_vertices[shape_->face_offsets[f] + k]; }
+  const std::vector<HullEdge>& edges() const { return shape_->edges; }
   /// Greatest distance between two vertices.
-  double diameter() const { return diameter_; }
-  /// The ABI view; valid while this hull lives and is not moved.
+  double diameter() const { return shape_->diameter; }
+  /// Length of the shortest edge.
+  double shortest_edge() const { return shape_->shortest_edge; }
+  /// Sine of the smallest angle between the two edges at a corner of a face.
+  double sharpest_corner() const { return shape_->sharpest_corner; }
+  /// The ABI view; valid while this hull or a copy of it lives.
   mfz_hull view() const;
 
   /// This hull scaled about its local origin by `s` > 0 (metamorphic relations).
@@ -46,17 +57,28 @@ class Hull {
   Hull renumbered() const;
 
   /// Assembles a hull from loops and normals already computed (hull builder,
-  /// tests); computes edges and diameter. No validation: see `validate_hull`.
+  /// tests); computes edges, diameter, shortest edge and sharpest corner.
+  /// No validation: see `validate_hull`.
   static Hull from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> loops,
                          std::vector<Vec3> normals);
 
  private:
-  std::vector<mfz_vec3> vertices_;
-  std::vector<int32_t> face_offsets_;
-  std::vector<int32_t> face_vertices_;
-  std::vector<mfz_vec3> face_normals_;
-  std::vector<HullEdge> edges_;
-  double diameter_ = 0;
+  // The arrays and the measures of the shape, shared by every copy: a hull
+  // never changes once built, and a case's relations pose it ten times (a
+  // copy was five allocations).
+  struct Shape {
+    std::vector<mfz_vec3> vertices;
+    std::vector<int32_t> face_offsets;
+    std::vector<int32_t> face_vertices;
+    std::vector<mfz_vec3> face_normals;
+    std::vector<HullEdge> edges;
+    double diameter = 0;
+    double shortest_edge = 0;
+    double sharpest_corner = 1;
+  };
+  std::shared_ptr<Shape> shape_ = std::make_shared<Shape>();
+  /// Fills in the measures of a hull being built.
+  void measure_shape();
 };
 
 /// The outcome of building a hull: a hull, or a one-line reason.

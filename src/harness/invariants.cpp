@@ -70,6 +70,21 @@ struct Context {
   double face_bias_allowance() const {
     return biased_face_axis() ? profile.face_bias * std::max(0.0, oracles.exact.signed_depth) : 0;
   }
+  /// Contact i's signed distance from its point on A to A's surface; and
+  /// from its point on B to B's. Both on-surface and within-both-hulls ask,
+  /// so each is measured once.
+  double own_distance_a(int i) const { return own_distances(i)[0]; }
+  double own_distance_b(int i) const { return own_distances(i)[1]; }
+  const double* own_distances(int i) const {
+    if (!own_known[i]) {
+      own[i][0] = signed_distance(scene.hull_a, scene.pose_a, on_a(i));
+      own[i][1] = signed_distance(scene.hull_b, scene.pose_b, on_b(i));
+      own_known[i] = true;
+    }
+    return own[i];
+  }
+  mutable double own[MFZ_MAX_CONTACTS][2] = {};
+  mutable bool own_known[MFZ_MAX_CONTACTS] = {};
 };
 
 // The profile's share of a check's tolerance, for the report.
@@ -186,8 +201,7 @@ InvariantCheck check_pair_consistency(const Context& c) {
 InvariantCheck check_on_surface(const Context& c) {
   const Scene& s = c.scene;
   return worst_contact(c, s.point_tolerance(), "distance to own surface", [&](int i) {
-    return std::max(std::abs(signed_distance(s.hull_a, s.pose_a, c.on_a(i))),
-                    std::abs(signed_distance(s.hull_b, s.pose_b, c.on_b(i))));
+    return std::max(std::abs(c.own_distance_a(i)), std::abs(c.own_distance_b(i)));
   });
 }
 
@@ -197,7 +211,7 @@ InvariantCheck check_within_both_hulls(const Context& c) {
   const Scene& s = c.scene;
   return worst_contact(c, s.point_tolerance(), "outside allowed by", [&](int i) {
     const double slack = std::abs(c.m.contacts[i].penetration);
-    return std::max({signed_distance(s.hull_a, s.pose_a, c.on_a(i)), signed_distance(s.hull_b, s.pose_b, c.on_b(i)),
+    return std::max({c.own_distance_a(i), c.own_distance_b(i),
                      signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
                      signed_distance(s.hull_a, s.pose_a, c.on_b(i)) - slack, 0.0});
   });

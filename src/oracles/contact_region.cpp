@@ -22,6 +22,8 @@ struct Planes {
 
 Planes world_planes(const Hull& hull, const Pose& pose, const Vec3& shift) {
   Planes planes;
+  planes.normals.reserve(static_cast<size_t>(hull.face_count()));
+  planes.offsets.reserve(static_cast<size_t>(hull.face_count()));
   for (int f = 0; f < hull.face_count(); ++f) {
     const Vec3 normal = pose.rotate(hull.face_normal(f));
     planes.normals.push_back(normal);
@@ -32,16 +34,28 @@ Planes world_planes(const Hull& hull, const Pose& pose, const Vec3& shift) {
 
 // The corners of the intersection of two convex hulls lie among: each hull's
 // vertices inside the other, and each edge of one crossing a face plane of
-// the other at a point inside both.
+// the other at a point inside both. Each vertex's height over each plane is
+// taken once and read by the vertex and by its edges: measured per edge, the
+// heights were a twentieth of a fuzz execution.
 void add_corners(const Hull& hull, const std::vector<Vec3>& world, const Vec3& shift, const Planes& own,
                  const Planes& other, double slack, std::vector<Vec3>& out) {
-  for (const Vec3& p : world)
-    if (other.contains(p + shift, slack)) out.push_back(p + shift);
+  const size_t faces = other.normals.size();
+  std::vector<double> heights(world.size() * faces);
+  for (size_t v = 0; v < world.size(); ++v) {
+    const Vec3 p = world[v] + shift;
+    double* height = &heights[v * faces];
+    bool inside = true;
+    for (size_t f = 0; f < faces; ++f) {
+      height[f] = other.normals[f].dot(p) - other.offsets[f];
+      inside = inside && !(height[f] > slack);
+    }
+    if (inside) out.push_back(p);
+  }
   for (const HullEdge& e : hull.edges()) {
     const Vec3 p = world[e.v0] + shift, q = world[e.v1] + shift;
-    for (size_t f = 0; f < other.normals.size(); ++f) {
-      const double dp = other.normals[f].dot(p) - other.offsets[f];
-      const double dq = other.normals[f].dot(q) - other.offsets[f];
+    const double *height_p = &heights[e.v0 * faces], *height_q = &heights[e.v1 * faces];
+    for (size_t f = 0; f < faces; ++f) {
+      const double dp = height_p[f], dq = height_q[f];
       if ((dp > 0) == (dq > 0) || dp == dq) continue;
       const Vec3 x = p + (dp / (dp - dq)) * (q - p);
       if (other.contains(x, slack) && own.contains(x, slack)) out.push_back(x);
