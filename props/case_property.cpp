@@ -96,7 +96,8 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     return outcome;
   }
   const OracleAnswers oracles = consult_oracles(scene);
-  const Verdict verdict = check_manifold(scene, oracles, status, manifold, *profile);
+  const Verdict verdict = check_manifold(scene, oracles, status, manifold, *profile,
+                                         selection.pass_details ? PassDetails::written : PassDetails::left_out);
   outcome.manifold = manifold;
   outcome.verdict = verdict;
   outcome.tags = tags_of(scene, oracles, manifold);

@@ -88,6 +88,9 @@ struct Selection {
   /// Keep a relation finding's transformed run in the outcome (pictures);
   /// off in the runs, where it would copy hulls on every relation.
   bool keep_transformed_run = false;
+  /// Describe every passing check in the outcome's verdict (replay prints
+  /// them); off in the runs, which read a failure's detail only.
+  bool pass_details = false;
   bool wants(const std::string& name) const { return names.empty() || names.count(name) > 0; }
 };
 

@@ -179,6 +179,22 @@ TEST(InvariantVerdict, ARefusalIsNotAPass) {
   EXPECT_TRUE(v.refused());
 }
 
+// The property suite reads a failure's detail only; explain and replay print
+// every check's.
+TEST_F(InvariantFires, APassingCheckIsDescribedOnlyWhenItsDetailIsWritten) {
+  mfz_manifold wrong = good();
+  wrong.penetration = -0.2;  // deeper than the exact 0.1: depth-exact fails
+  const auto detail_of = [&](const mfz_manifold& m, PassDetails details, const std::string& name) {
+    for (const InvariantCheck& c : check_manifold(run_.scene, run_.oracles, 0, m, {}, details).checks)
+      if (c.name == name) return c.detail;
+    return std::string("no such check");
+  };
+  EXPECT_EQ(detail_of(good(), PassDetails::written, "depth-exact"), "depth 0.1, exact 0.1");
+  EXPECT_EQ(detail_of(good(), PassDetails::left_out, "depth-exact"), "");
+  EXPECT_EQ(detail_of(good(), PassDetails::left_out, "on-surface"), "");
+  EXPECT_EQ(detail_of(wrong, PassDetails::left_out, "depth-exact"), "depth 0.2, exact 0.1");
+}
+
 TEST(InvariantVerdict, EveryContractInvariantIsChecked) {
   const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
                                                         {Vec3(0, 0, 1.5), Quat::Identity()}));

@@ -72,6 +72,7 @@ int replay_command(const std::vector<std::string>& words) {
     return kExitInputError;
   }
   props::Selection selection;
+  selection.pass_details = true;  // replay prints every check
   if (args->has("--strict")) selection.level = props::Level::strict;
   if (!apply_profile(*args, *session, selection, error)) {
     std::cerr << "manifuzz replay: " << error << "\n";

@@ -52,14 +52,17 @@ struct Verdict {
 /// Checks `manifold` (what the generator returned with `status`) against
 /// every invariant, relaxed as `profile` says (its precision must already be
 /// in `scene`). A refusal is reported by `refused()`, and its checks are
-/// skipped.
+/// skipped. A passing check describes itself only when its detail is
+/// `written` (explain and replay print every check; the property suite
+/// reads a failure's detail only).
+enum class PassDetails { written, left_out };
 Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t status, const mfz_manifold& manifold,
-                       const Profile& profile = {});
+                       const Profile& profile = {}, PassDetails pass_details = PassDetails::written);
 
 /// The invariants a relation's transformed run must pass as well: every check
 /// that needs no oracle of its own, against the original case's oracles (a
 /// motion, a renumbering or a swap keeps the exact depth; a scale multiplies
-/// it by `depth_factor`).
+/// it by `depth_factor`). A passing check's detail is left out.
 Verdict check_transformed_manifold(const Scene& scene, const OracleAnswers& original, double depth_factor,
                                    const mfz_manifold& m, const Profile& profile = {});
 
