@@ -11,6 +11,7 @@
 #include "test_support.h"
 #include "geometry/tolerances.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace mfz {
@@ -83,6 +84,40 @@ TEST(EdgeArcs, AHullWithAnOpenEdgeIsNotComplete) {
   const mfz_hull view = open.view();
   const Pose pose{Vec3::Zero(), Quat::Identity()};
   EXPECT_FALSE(EdgeArcs(PosedHull(view, pose)).complete());
+}
+
+// The row filter in vector lanes must keep every pair the scalar test keeps,
+// the near-misses its slack lets through included: boxes face to face put
+// arc ends exactly on the other's great circles (products of 0), random
+// hulls of 8 to 128 points put them anywhere.
+TEST(EdgeArcs, TheStraddlingArcsHoldEveryPairTheGaussMapTestKeeps) {
+  std::vector<std::pair<std::vector<Vec3>, std::vector<Vec3>>> shapes = {{test::box_points(1, 1, 1), test::box_points(0.5, 0.5, 0.5)}};
+  for (const int points : {8, 32, 128}) shapes.push_back({test::sphere_points(points, 7u * points), test::sphere_points(points, 11u * points)});
+  long kept = 0, straddling = 0, all = 0;
+  for (const auto& [points_a, points_b] : shapes) {
+    const Hull a = *build_hull(points_a).hull, b = *build_hull(points_b).hull;
+    const mfz_hull va = a.view(), vb = b.view();
+    for (const Quat& turn : {Quat::Identity(), test::about(Vec3(0, 0, 1), 0.3), test::about(Vec3(1, 2, 3), 0.7)}) {
+      const Pose pa{Vec3::Zero(), Quat::Identity()}, pb{Vec3(0, 0, 1.2), turn};
+      const PosedHull posed_a(va, pa), posed_b(vb, pb);
+      const EdgeArcs arcs_a(posed_a), arcs_b(posed_b);
+      ASSERT_TRUE(arcs_a.complete() && arcs_b.complete());
+      int row[kMaxArcs];
+      for (int i = 0; i < arcs_a.size(); ++i) {
+        const int count = arcs_b.straddling(arcs_a[i].across, row);
+        ASSERT_TRUE(std::is_sorted(row, row + count));
+        for (int j = 0; j < arcs_b.size(); ++j)
+          if (may_span_minkowski_face(arcs_a[i], arcs_b[j])) {
+            ++kept;
+            ASSERT_TRUE(std::binary_search(row, row + count, j)) << "arcs " << i << " and " << j << " left out";
+          }
+        straddling += count;
+        all += arcs_b.size();
+      }
+    }
+  }
+  EXPECT_GT(kept, 0);
+  EXPECT_LT(straddling * 2, all) << "most arcs lie on one side of a great circle";
 }
 
 // world_extent: the largest world coordinate, whose ulps bound the rounding;

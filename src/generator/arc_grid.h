@@ -34,6 +34,8 @@ class ArcGrid {
   /// The arcs of B whose boxes meet the box of A's arc `arc_a`, ascending,
   /// into `out` (room for every arc of B); returns how many.
   int candidates(const EdgeArc& arc_a, int* out) const;
+  /// How many arcs were too long to bin: each is offered to every arc of A.
+  int unbinned() const { return everywhere_count_; }
 
  private:
   struct Box {

@@ -30,6 +30,7 @@ void EdgeArcs::build(const PosedHull& hull) {
       arcs_[count_++] = {edge.v0, edge.v1, edge.face, edge.twin, n_face, n_twin, n_twin.cross(n_face)};
     }
     complete_ = true;
+    fill_columns();
     return;
   }
   for (int f = 0; f < hull.face_count(); ++f) {
@@ -42,6 +43,38 @@ void EdgeArcs::build(const PosedHull& hull) {
     }
   }
   complete_ = pair_twins(hull);
+  if (complete_) fill_columns();
+}
+
+void EdgeArcs::fill_columns() {
+  for (int i = 0; i < count_; ++i) {
+    const EdgeArc& arc = arcs_[i];
+    face_x_[i] = arc.n_face.x(), face_y_[i] = arc.n_face.y(), face_z_[i] = arc.n_face.z();
+    twin_x_[i] = arc.n_twin.x(), twin_y_[i] = arc.n_twin.y(), twin_z_[i] = arc.n_twin.z();
+  }
+}
+
+int EdgeArcs::straddling(const Vec3& across, int* out) const {
+  // The ends are unit vectors and so is |across| at most: each dot product
+  // is within a few ulps of the test's own, and so is their product.
+  constexpr double kLaneRounding = 1e-13;
+  const double ax = across.x(), ay = across.y(), az = across.z();
+  const int count = count_;
+  double product[kMaxArcs];
+#pragma omp simd
+  for (int j = 0; j < count; ++j) {
+    const double c = face_x_[j] * ax + face_y_[j] * ay + face_z_[j] * az;
+    const double d = twin_x_[j] * ax + twin_y_[j] * ay + twin_z_[j] * az;
+    product[j] = c * d;
+  }
+  // Without a branch: a third or so of the arcs straddle, in no pattern a
+  // predictor could learn.
+  int found = 0;
+  for (int j = 0; j < count; ++j) {
+    out[found] = j;
+    found += product[j] < tol::kGaussArcSlack + kLaneRounding;
+  }
+  return found;
 }
 
 // Sorting the twin steps pairs every edge with its other face in E log E.

@@ -37,10 +37,23 @@ class EdgeArcs {
   int size() const { return count_; }
   const EdgeArc& operator[](int i) const { return arcs_[i]; }
 
+  /// The arcs (of B) whose ends do not lie strictly on one side of the
+  /// great circle normal to `across` (an arc of A's): the first of
+  /// may_span_minkowski_face's tests, for every arc at once, in vector
+  /// lanes. A margin over the test's slack covers the lanes' other
+  /// rounding, so that every pair the test keeps is among these; the test
+  /// itself then decides. Writes their indices to `out`; returns how many.
+  int straddling(const Vec3& across, int* out) const;
+
  private:
   bool pair_twins(const PosedHull& hull);
+  void fill_columns();
 
   EdgeArc arcs_[kMaxArcs];
+  // The arcs' ends as columns (x, y, z of every face normal, then of every
+  // twin normal) for `straddling`.
+  double face_x_[kMaxArcs], face_y_[kMaxArcs], face_z_[kMaxArcs];
+  double twin_x_[kMaxArcs], twin_y_[kMaxArcs], twin_z_[kMaxArcs];
   int count_ = 0;
   bool complete_ = false;
 };

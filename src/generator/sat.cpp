@@ -256,13 +256,17 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     }
     return true;
   };
-  if (arcs_a.size() * arcs_b.size() < kArcGridMinPairs) {
+  int near[kMaxArcs];
+  const bool few_pairs = arcs_a.size() * arcs_b.size() < kArcGridMinPairs;
+  if (!few_pairs) kept_grid.build(arcs_b);
+  if (few_pairs || 4 * kept_grid.unbinned() > arcs_b.size()) {
+    // Each arc of A against the arcs of B that straddle its great circle,
+    // found for the whole row in vector lanes: the pair loop was most of a
+    // small hull's SAT.
     for (int i = 0; i < arcs_a.size(); ++i)
-      if (!against(i, nullptr, arcs_b.size())) return best;
+      if (!against(i, near, arcs_b.straddling(arcs_a[i].across, near))) return best;
     return best;
   }
-  kept_grid.build(arcs_b);
-  int near[kMaxArcs];
   for (int i = 0; i < arcs_a.size(); ++i)
     if (!against(i, near, kept_grid.candidates(arcs_a[i], near))) return best;
   return best;
