@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "geometry/qhull_facets.h"
+#include "geometry/simplicial_facets.h"
 #include "geometry/tolerances.h"
 
 namespace mfz {
@@ -212,16 +213,11 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
   return hull;
 }
 
-HullBuild build_hull(const std::vector<Vec3>& points) {
-  if (points.size() < 4) return {std::nullopt, "fewer than four points (" + std::to_string(points.size()) + ")"};
-  for (const Vec3& p : points)
-    if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
-  if (std::string why = flatness_error(points); !why.empty()) return {std::nullopt, why};
+namespace {
 
-  std::string qhull_error;
-  std::vector<QhullFacet> facets = qhull_facets(points, /*triangulate=*/false, qhull_error);
-  if (facets.empty()) return {std::nullopt, "qhull: " + qhull_error};
-
+// The contract's hull from a builder's facets: loops ordered, vertices that
+// are not extreme dropped, points renumbered, the result validated.
+HullBuild hull_from_facets(const std::vector<Vec3>& points, std::vector<QhullFacet> facets) {
   std::vector<std::vector<int>> loops;
   std::vector<Vec3> normals;
   loops.reserve(facets.size());
@@ -248,6 +244,26 @@ HullBuild build_hull(const std::vector<Vec3>& points) {
   Hull hull = Hull::from_faces(std::move(vertices), std::move(loops), std::move(normals));
   if (std::string why = validate_hull(hull); !why.empty()) return {std::nullopt, "invalid hull: " + why};
   return {std::move(hull), {}};
+}
+
+}  // namespace
+
+HullBuild build_hull(const std::vector<Vec3>& points) {
+  if (points.size() < 4) return {std::nullopt, "fewer than four points (" + std::to_string(points.size()) + ")"};
+  for (const Vec3& p : points)
+    if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
+  if (std::string why = flatness_error(points); !why.empty()) return {std::nullopt, why};
+
+  // A small cloud in general position without Qhull's set-up; where its
+  // triangles do not close into a valid hull, Qhull decides as before.
+  if (std::optional<std::vector<QhullFacet>> simplicial = simplicial_facets(points)) {
+    HullBuild fast = hull_from_facets(points, std::move(*simplicial));
+    if (fast.hull) return fast;
+  }
+  std::string qhull_error;
+  std::vector<QhullFacet> facets = qhull_facets(points, /*triangulate=*/false, qhull_error);
+  if (facets.empty()) return {std::nullopt, "qhull: " + qhull_error};
+  return hull_from_facets(points, std::move(facets));
 }
 
 std::string validate_hull(const Hull& hull) {

@@ -2,7 +2,7 @@
 /// \file
 /// Hulls built once per distinct point set. The fuzzer's mutations, the
 /// relations and the shrinker move poses far more often than points, and
-/// Qhull's set-up is about a third of a small case. The cache is bounded
+/// a hull takes longer to build than a small case takes to check. The cache is bounded
 /// (the least recently used hull goes first), so a run of hours holds at most
 /// `capacity` hulls.
 #include <cstddef>

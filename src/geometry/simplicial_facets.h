@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// The facets of a small cloud's hull in general position, by brute force:
+/// every triangle of three points with every other point clearly below its
+/// plane is a facet. Qhull spends about 14 us of set-up on every call, what
+/// ever the cloud (it draws a thousand random numbers to test its generator,
+/// reads the process's CPU clock by a system call, prints its options into
+/// a string): three quarters of an 8-point hull, a quarter of a property
+/// case, and no way around it through its API (a reused qhT saves nothing).
+/// This takes about a microsecond for 8 points.
+///
+/// It only ever answers where Qhull would give the same facets: a fourth
+/// point within kNearPlane of a candidate's plane (a face Qhull would merge,
+/// or a point it would call coplanar) makes it decline, and so does a cloud
+/// of more than kSimplicialMaxPoints; the caller then asks Qhull.
+#include <optional>
+#include <vector>
+
+#include "geometry/qhull_facets.h"
+
+namespace mfz {
+
+/// Brute force tries every triangle against every point: n^4 / 6 steps,
+/// cheaper than Qhull's set-up up to about this many points.
+inline constexpr int kSimplicialMaxPoints = 12;
+
+/// A point within this distance (x the cloud's diameter) of a candidate
+/// facet's plane is on it, as far as this builder may tell: the cloud is
+/// not in general position and Qhull decides. Far above the rounding of a
+/// plane through three points (1e-15), far below any face a case means to
+/// have.
+inline constexpr double kNearPlane = 1e-9;
+
+/// The hull's facets: triangles, vertices counter-clockwise seen from
+/// outside, outward unit normals, offsets through their first vertex. Facets
+/// come in the order of their vertices' indices. nullopt where the cloud has
+/// fewer than four or more than kSimplicialMaxPoints points, or a point within
+/// kNearPlane of a candidate facet's plane. Whether the triangles close is
+/// the caller's to check (validate_hull).
+std::optional<std::vector<QhullFacet>> simplicial_facets(const std::vector<Vec3>& points);
+
+}  // namespace mfz
