@@ -173,6 +173,25 @@ TEST(HullMeasures, ShortestEdgeAndSharpestCornerOfABox) {
   EXPECT_EQ(h.renumbered().shortest_edge(), 2);
 }
 
+// Renumbering copies the measures rather than taking them again: they must
+// be what taking them again gives, to the bit.
+TEST(HullMeasures, ARenumberedHullKeepsTheMeasuresItWouldTakeAgain) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const Hull r = build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull->renumbered();
+    std::vector<Vec3> vertices, normals;
+    std::vector<std::vector<int>> loops(static_cast<size_t>(r.face_count()));
+    for (int i = 0; i < r.vertex_count(); ++i) vertices.push_back(r.vertex(i));
+    for (int f = 0; f < r.face_count(); ++f) {
+      normals.push_back(r.face_normal(f));
+      for (int k = 0; k < r.face_size(f); ++k) loops[f].push_back(r.face_vertex(f, k));
+    }
+    const Hull again = Hull::from_faces(vertices, loops, normals);
+    EXPECT_EQ(r.shortest_edge(), again.shortest_edge()) << "seed " << seed;
+    EXPECT_EQ(r.sharpest_corner(), again.sharpest_corner()) << "seed " << seed;
+    EXPECT_EQ(r.diameter(), again.diameter()) << "seed " << seed;
+  }
+}
+
 TEST(HullMeasures, TheSharpestCornerIsTheSineOfTheSmallestFaceAngle) {
   // A wedge whose slanted faces meet the base at corners of 0.1 rad.
   const double t = std::tan(0.1);

@@ -113,8 +113,12 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
 // The sine of the smallest angle between two edges meeting at a corner of a
 // face is in local space: a rigid motion changes no angle.
 void Hull::measure_shape() {
+  shape_->diameter = diameter_of(shape_->vertices);
+  measure_corners_and_edges();
+}
+
+void Hull::measure_corners_and_edges() {
   Shape& shape = *shape_;
-  shape.diameter = diameter_of(shape.vertices);
   shape.shortest_edge = std::numeric_limits<double>::infinity();
   for (const HullEdge& e : shape.edges)
     shape.shortest_edge = std::min(shape.shortest_edge, (vertex(e.v1) - vertex(e.v0)).norm());
@@ -138,7 +142,7 @@ Hull Hull::scaled(double s) const {
   Hull out;
   *out.shape_ = *shape_;
   for (mfz_vec3& v : out.shape_->vertices) v = to_abi(Vec3(s * to_vec(v)));
-  out.measure_shape();
+  out.measure_corners_and_edges();
   out.shape_->diameter = s * diameter();
   return out;
 }
@@ -157,8 +161,11 @@ Hull Hull::renumbered() const {
   }
   for (const HullEdge& e : edges())
     shape.edges.push_back({last - e.v0, last - e.v1, faces - 1 - e.face_left, faces - 1 - e.face_right});
-  out.measure_shape();
+  // The same corners and edges, each between the same two vertices in the
+  // same direction: the same measures, to the bit.
   shape.diameter = diameter();
+  shape.shortest_edge = shortest_edge();
+  shape.sharpest_corner = sharpest_corner();
   return out;
 }
 

@@ -79,6 +79,8 @@ class Hull {
   std::shared_ptr<Shape> shape_ = std::make_shared<Shape>();
   /// Fills in the measures of a hull being built.
   void measure_shape();
+  /// The same but the diameter.
+  void measure_corners_and_edges();
 };
 
 /// The outcome of building a hull: a hull, or a one-line reason.

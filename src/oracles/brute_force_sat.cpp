@@ -43,6 +43,23 @@ struct PointColumns {
   }
 };
 
+// Every point projected onto a row of axes (columns nx, ny, nz): the least
+// and the greatest projection per axis.
+void project_row(const PointColumns& points, const double* nx, const double* ny, const double* nz, size_t row,
+                 double* lowest, double* highest) {
+  for (size_t j = 0; j < row; ++j) lowest[j] = INFINITY, highest[j] = -INFINITY;
+  const double *px = points.xyz.data(), *py = px + points.n, *pz = py + points.n;
+  for (size_t i = 0; i < points.n; ++i) {
+    const double x = px[i], y = py[i], z = pz[i];
+#pragma omp simd
+    for (size_t j = 0; j < row; ++j) {
+      const double d = nx[j] * x + ny[j] * y + nz[j] * z;
+      lowest[j] = d < lowest[j] ? d : lowest[j];
+      highest[j] = d > highest[j] ? d : highest[j];
+    }
+  }
+}
+
 // A face of A counts outward and a face of B inward only: those are the faces
 // of the Minkowski difference (reversed, a face normal meets an edge or a
 // vertex of its hull). Edge pairs count either way.
@@ -100,22 +117,42 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
     axes[count++] = ranked_axis(a, b, s.pose_a.rotate(s.hull_a.face_normal(f)), AxisKind::face_a, f, -1);
   for (int f = 0; f < s.hull_b.face_count(); ++f)
     axes[count++] = ranked_axis(a, b, s.pose_b.rotate(s.hull_b.face_normal(f)), AxisKind::face_b, -1, f);
-  std::vector<Vec3> vectors_b;
-  std::vector<double> lengths_b;
-  vectors_b.reserve(edges_b.size());
-  lengths_b.reserve(edges_b.size());
-  for (const HullEdge& e : edges_b) {
-    vectors_b.push_back(s.world_b[e.v1] - s.world_b[e.v0]);
-    lengths_b.push_back(vectors_b.back().norm());
+  // The edge pairs a row at a time: one edge of A against every edge of B,
+  // the row's axes as columns, each vertex projected onto the whole row in
+  // vector lanes. Each projection is the same sum as PointColumns::project's,
+  // (x + y) + z, so every overlap is the same to the bit; per axis, the
+  // loops over eight vertices left the lanes mostly idle.
+  const size_t row = edges_b.size();
+  std::vector<double> columns(9 * row);
+  double *vx = columns.data(), *vy = vx + row, *vz = vy + row;  // B's edge vectors
+  double *nx = vz + row, *ny = nx + row, *nz = ny + row;        // the row's unit axes
+  double *length_b = nz + row, *min_a = length_b + row, *max_a = min_a + row;
+  std::vector<double> extremes_b(2 * row);
+  double *min_b = extremes_b.data(), *max_b = min_b + row;
+  for (size_t j = 0; j < row; ++j) {
+    const Vec3 v = s.world_b[edges_b[j].v1] - s.world_b[edges_b[j].v0];
+    vx[j] = v.x(), vy[j] = v.y(), vz[j] = v.z(), length_b[j] = v.norm();
   }
+  std::vector<unsigned char> spans(row);
   for (size_t i = 0; i < edges_a.size(); ++i) {
     const Vec3 ea = s.world_a[edges_a[i].v1] - s.world_a[edges_a[i].v0];
     const double length_a = ea.norm();
-    for (size_t j = 0; j < edges_b.size(); ++j) {
-      const Vec3 axis = ea.cross(vectors_b[j]);
+    for (size_t j = 0; j < row; ++j) {
+      const Vec3 axis = ea.cross(Vec3(vx[j], vy[j], vz[j]));
       const double length = axis.norm();
-      if (length <= tol::kParallelEdges * length_a * lengths_b[j]) continue;
-      axes[count++] = ranked_axis(a, b, axis / length, AxisKind::edge_edge, static_cast<int>(i), static_cast<int>(j));
+      spans[j] = !(length <= tol::kParallelEdges * length_a * length_b[j]);
+      const Vec3 n = spans[j] ? Vec3(axis / length) : Vec3::Zero();
+      nx[j] = n.x(), ny[j] = n.y(), nz[j] = n.z();
+    }
+    project_row(a, nx, ny, nz, row, min_a, max_a);
+    project_row(b, nx, ny, nz, row, min_b, max_b);
+    for (size_t j = 0; j < row; ++j) {
+      if (!spans[j]) continue;
+      const Vec3 n(nx[j], ny[j], nz[j]);
+      const double along = max_a[j] - min_b[j], against = max_b[j] - min_a[j];
+      const int fa = static_cast<int>(i), fb = static_cast<int>(j);
+      axes[count++] = along <= against ? RankedAxis{n, along, against, AxisKind::edge_edge, fa, fb}
+                                       : RankedAxis{-n, against, along, AxisKind::edge_edge, fa, fb};
     }
   }
   axes.resize(count);
