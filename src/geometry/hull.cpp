@@ -110,13 +110,15 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
 
 }  // namespace
 
-// The sine of the smallest angle between two edges meeting at a corner of a
-// face is in local space: a rigid motion changes no angle.
+// The measures are taken in local space: a rigid motion changes none of
+// them.
 void Hull::measure_shape() {
   shape_->diameter = diameter_of(shape_->vertices);
   measure_corners_and_edges();
 }
 
+// The sharpest corner is the sine of the smallest angle between the two
+// edges meeting at a corner of a face.
 void Hull::measure_corners_and_edges() {
   Shape& shape = *shape_;
   shape.shortest_edge = std::numeric_limits<double>::infinity();

@@ -2,8 +2,8 @@
 /// \file
 /// The facets of a small cloud's hull in general position, by brute force:
 /// every triangle of three points with every other point clearly below its
-/// plane is a facet. Qhull spends about 14 us of set-up on every call, what
-/// ever the cloud (it draws a thousand random numbers to test its generator,
+/// plane is a facet. Qhull spends about 14 us of set-up on every call,
+/// whatever the cloud (it draws a thousand random numbers to test its generator,
 /// reads the process's CPU clock by a system call, prints its options into
 /// a string): three quarters of an 8-point hull, a quarter of a property
 /// case, and no way around it through its API (a reused qhT saves nothing).

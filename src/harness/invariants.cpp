@@ -106,9 +106,9 @@ InvariantCheck measured(double error, double tolerance, std::string detail = {})
 // The same, with the detail written only when someone will read it.
 template <class Detail>
 InvariantCheck measured(const Context& c, double error, double tolerance, Detail&& detail) {
-  const bool ok = error <= tolerance;  // a NaN error fails
-  return {{}, ok ? CheckStatus::pass : CheckStatus::fail, error, tolerance,
-          ok && !c.pass_details ? std::string() : detail()};
+  InvariantCheck check = measured(error, tolerance);
+  if (check.status == CheckStatus::fail || c.pass_details) check.detail = detail();
+  return check;
 }
 
 InvariantCheck skipped(std::string why) { return {{}, CheckStatus::skipped, 0, 0, std::move(why)}; }

@@ -123,12 +123,11 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
   // (x + y) + z, so every overlap is the same to the bit; per axis, the
   // loops over eight vertices left the lanes mostly idle.
   const size_t row = edges_b.size();
-  std::vector<double> columns(9 * row);
+  std::vector<double> columns(11 * row);
   double *vx = columns.data(), *vy = vx + row, *vz = vy + row;  // B's edge vectors
   double *nx = vz + row, *ny = nx + row, *nz = ny + row;        // the row's unit axes
   double *length_b = nz + row, *min_a = length_b + row, *max_a = min_a + row;
-  std::vector<double> extremes_b(2 * row);
-  double *min_b = extremes_b.data(), *max_b = min_b + row;
+  double *min_b = max_a + row, *max_b = min_b + row;
   for (size_t j = 0; j < row; ++j) {
     const Vec3 v = s.world_b[edges_b[j].v1] - s.world_b[edges_b[j].v0];
     vx[j] = v.x(), vy[j] = v.y(), vz[j] = v.z(), length_b[j] = v.norm();

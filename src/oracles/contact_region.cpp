@@ -35,8 +35,8 @@ Planes world_planes(const Hull& hull, const Pose& pose, const Vec3& shift) {
 // The corners of the intersection of two convex hulls lie among: each hull's
 // vertices inside the other, and each edge of one crossing a face plane of
 // the other at a point inside both. Each vertex's height over each plane is
-// taken once and read by the vertex and by its edges: measured per edge, the
-// heights were a twentieth of a fuzz execution.
+// taken once and read by the vertex and by its edges (taken per edge, twice
+// for every vertex of three edges, this was 7% of a fuzz execution).
 void add_corners(const Hull& hull, const std::vector<Vec3>& world, const Vec3& shift, const Planes& own,
                  const Planes& other, double slack, std::vector<Vec3>& out) {
   const size_t faces = other.normals.size();
