@@ -12,7 +12,9 @@
 #include "geometry/tolerances.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <random>
 
 namespace mfz {
 namespace {
@@ -167,6 +169,63 @@ RC_GTEST_PROP(SatPruning, GivesTheDepthThatTryingEveryEdgePairGives, ()) {
   const double scale = std::max(a.hull->diameter(), b.hull->diameter());
   const double touching = tol::kTouching * scale + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
   expect_same_answer(run_sat(posed_a, posed_b), run_sat_every_pair(posed_a, posed_b), extent, touching);
+}
+
+std::vector<Vec3> prism_points(int sides) {
+  std::vector<Vec3> points;
+  for (int k = 0; k < sides; ++k) {
+    const double angle = 2 * M_PI * k / sides;
+    for (double z : {-0.6, 0.6}) points.push_back(Vec3(std::cos(angle), std::sin(angle), z));
+  }
+  return points;
+}
+
+// Large hulls bound whole rows of edge pairs, B's arcs, and faces by the
+// balls inside the hulls before any pair is tried (sat.cpp). Random clouds
+// of 24 to 128 points overlapping shallow and deep, in general position
+// (no ties): the winning axis is the one every pair finds, to the bit; and
+// prisms, whose parallel side edges tie.
+TEST(SatPruning, LargeHullsBoundedByRowsFindTheAxisEveryPairFinds) {
+  std::mt19937 random(20261124);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::normal_distribution<double> gauss;
+  const auto direction = [&] { return Vec3(gauss(random), gauss(random), gauss(random)).normalized(); };
+  int edge_axes = 0, overlapping = 0;
+  for (unsigned seed = 1; seed <= 96; ++seed) {
+    const int sizes[] = {24, 48, 96, 128};
+    // Every third A a prism of 12 to 64 sides: its rims' arcs are quarter
+    // circles, whose least along a direction is often between their ends.
+    const bool prism = seed % 3 == 0;
+    std::vector<Vec3> points_a = prism ? prism_points(12 + seed % 53) : test::sphere_points(sizes[seed % 4], seed);
+    std::vector<Vec3> points_b = test::sphere_points(sizes[(seed / 4) % 4], 1000 + seed);
+    const double radius_b = 0.5 + unit(random);
+    for (Vec3& p : points_b) p *= radius_b;
+    const Hull a = *build_hull(points_a).hull, b = *build_hull(points_b).hull;
+    const mfz_hull va = a.view(), vb = b.view();
+    // Centres from touching (1 + radius_b) to nearly concentric.
+    const double apart = (1 + radius_b) * (0.15 + 0.85 * unit(random));
+    const Pose pa{Vec3::Zero(), test::about(direction(), 3 * unit(random))};
+    const Pose pb{apart * direction(), test::about(direction(), 3 * unit(random))};
+    const PosedHull posed_a(va, pa), posed_b(vb, pb);
+    const SatResult bounded = run_sat(posed_a, posed_b), every = run_sat_every_pair(posed_a, posed_b);
+    EXPECT_EQ(bounded.separated, every.separated) << "seed " << seed;
+    if (every.separated) continue;  // any separating axis will do
+    ++overlapping;
+    EXPECT_EQ(bounded.kind, every.kind) << "seed " << seed;
+    EXPECT_NEAR(bounded.depth, every.depth, 1e-12) << "seed " << seed;
+    if (prism && bounded.kind == AxisKind::edge_edge) {
+      // A prism's side edges are parallel: several pairs give one axis, and
+      // the two orders meet them differently.
+      EXPECT_NEAR(std::abs(bounded.normal.dot(every.normal)), 1.0, 1e-12) << "seed " << seed;
+    } else {
+      EXPECT_EQ(bounded.feature_a, every.feature_a) << "seed " << seed;
+      EXPECT_EQ(bounded.feature_b, every.feature_b) << "seed " << seed;
+      EXPECT_EQ(bounded.depth, every.depth) << "seed " << seed;
+    }
+    edge_axes += every.kind == AxisKind::edge_edge;
+  }
+  EXPECT_GT(overlapping, 80);
+  EXPECT_GT(edge_axes, 20) << "the edge pairs should win some of the pairs";
 }
 
 }  // namespace

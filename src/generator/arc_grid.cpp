@@ -36,7 +36,7 @@ ArcGrid::Box ArcGrid::box_of(const Vec3& p, const Vec3& q) const {
   return box;
 }
 
-void ArcGrid::build(const EdgeArcs& arcs_b) {
+void ArcGrid::build(const EdgeArcs& arcs_b, const bool* left_out) {
   arc_count_ = arcs_b.size();
   everywhere_count_ = 0;
   query_ = 0;
@@ -49,8 +49,12 @@ void ArcGrid::build(const EdgeArcs& arcs_b) {
   Box boxes[kMaxArcs];
   std::fill(cell_start_, cell_start_ + cells + 1, 0);
   for (int j = 0; j < arc_count_; ++j) {
-    boxes[j] = box_of(-arcs_b[j].n_face, -arcs_b[j].n_twin);
     stamp_[j] = 0;
+    if (left_out && left_out[j]) {
+      boxes[j] = {{-1, -1, -1}, {-1, -1, -1}};
+      continue;
+    }
+    boxes[j] = box_of(-arcs_b[j].n_face, -arcs_b[j].n_twin);
     if (boxes[j].lo[0] < 0) {
       everywhere_[everywhere_count_++] = j;
       continue;

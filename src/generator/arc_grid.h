@@ -29,8 +29,10 @@ class ArcGrid {
   ArcGrid() = default;
   /// Bins the arcs of B, negated (B's Gauss map as A - B sees it).
   explicit ArcGrid(const EdgeArcs& arcs_b) { build(arcs_b); }
-  /// The same, into this object (SAT keeps one per thread: 16 KB).
-  void build(const EdgeArcs& arcs_b);
+  /// The same, into this object (SAT keeps one per thread: 16 KB); an arc
+  /// j with `left_out[j]` set is never offered (SAT leaves out the arcs
+  /// whose every pair is hopeless).
+  void build(const EdgeArcs& arcs_b, const bool* left_out = nullptr);
   /// The arcs of B whose boxes meet the box of A's arc `arc_a`, ascending,
   /// into `out` (room for every arc of B); returns how many.
   int candidates(const EdgeArc& arc_a, int* out) const;
