@@ -141,9 +141,9 @@ SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
 // (an arc of A against every arc of B) over the arc where their axes lie,
 // so that most rows and most of B's arcs never reach the grid (on
 // 128-point hulls 303 of 378 rows end there, and 304 of B's 378 arcs; the
-// family's calls take 1.7-2.6x less time, 32-point hulls' 1.3x less). A skipped axis could not have
-// changed `best`: its overlap exceeds the best by more than any tie's
-// slack. A face normal skipped this way is not a separating axis in its own
+// family's calls take 1.7-2.6x less time, 32-point hulls' 1.3x less). A
+// skipped axis could not have changed `best`: its overlap exceeds the best
+// by more than any tie's slack. A face normal skipped this way is not a separating axis in its own
 // direction; reversed it may be, and then a later axis proves the
 // separation (SAT's axes in their own directions suffice), with another
 // normal, which a separated manifold does not report.
@@ -340,9 +340,9 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     // meets it, B's edge is B's support along -m): an arc whose every pair
     // is hopeless is left out of the grid.
     bool left_out[kMaxArcs];
+    const double past = best.depth + tie_room;
     for (int j = 0; j < arcs_b.size(); ++j) {
       const EdgeArc& y = arcs_b[j];
-      const double past = best.depth + tie_room;
       left_out[j] = above_on_arc(y, b.world_vertex(y.v0) - sa.centre, past - sa.inner) &&
                     above_on_arc(y, -centres, past - sa.inner - sb.inner);
     }
