@@ -4,21 +4,29 @@
 #include <limits>
 
 #include "generator/contact_output.h"
+#include "geometry/tolerances.h"
 
 namespace mfz {
 namespace {
 
 // How far a ray from `point` along `out_of` runs inside the reference hull;
-// negative when the point is outside it.
+// negative when the point is outside it. A point within the frame's
+// rounding of a face's plane is on it: where an edge of the other hull
+// enters, its point lies on the plane it enters by, and rounding puts it on
+// either side. Taken as outside there, the entering points of one argument
+// order were all refused and the last resort took the other hull's point,
+// 3,428 away (F29: the correct face-bias variant, swap-symmetry, --seed 61).
 double exit_along(const PosedHull& reference, const Vec3& point, const Vec3& out_of) {
   double exit = std::numeric_limits<double>::infinity();
+  const double point_extent = point.cwiseAbs().maxCoeff();
   for (int f = 0; f < reference.face_count(); ++f) {
     const Vec3 normal = reference.world_face_normal(f);
-    const double below = normal.dot(reference.world_face_point(f, 0) - point);
-    if (below < 0) return -1;  // outside this face's plane
+    const Vec3 on_face = reference.world_face_point(f, 0);
+    const double below = normal.dot(on_face - point);
+    if (below < -tol::world_rounding(point_extent + on_face.cwiseAbs().maxCoeff())) return -1;  // outside
     const double rate = normal.dot(out_of);
     if (!(rate > 0)) continue;  // the ray does not leave through a face it runs along or away from
-    exit = std::min(exit, below / rate);
+    exit = std::min(exit, std::max(below, 0.0) / rate);
   }
   return exit;
 }
