@@ -4,7 +4,7 @@
 # run of bench/generator_bench on one pinned core, built at -O3 (the `bench`
 # preset, build/bench); then the harness's own throughput (property cases
 # and fuzz executions per second, bench/property_bench and
-# bench/fuzz_target_bench). Google Benchmark's reports go to OUT/; the
+# bench/fuzz_target_bench) and a case's time stage by stage. Google Benchmark's reports go to OUT/; the
 # table, with the machine it ran on, to stdout. Time it on a quiet machine.
 #
 #   scripts/bench_table.sh [OUT]   (default: bench-results)
@@ -22,4 +22,12 @@ taskset -c "$core" build/bench/bench/property_bench --benchmark_min_time=2 > "$o
 taskset -c "$core" build/bench/bench/fuzz_target_bench --benchmark_min_time=2 > "$out/fuzz_target_bench.txt" 2>&1
 echo "| harness on one core | per second |"
 echo "|---|---|"
-sed -n 's/^\(BM_[^ ]*\) .*items_per_second=\([0-9.]*[kM]*\)\/s.*/| \1 | \2 |/p' "$out/property_bench.txt" "$out/fuzz_target_bench.txt"
+grep -v '^BM_CaseStage' "$out/property_bench.txt" | cat - "$out/fuzz_target_bench.txt" |
+  sed -n 's/^\(BM_[^ ]*\) .*items_per_second=\([0-9.]*[kM]*\)\/s.*/| \1 | \2 |/p'
+echo
+# A case's stages, microseconds each: BM_CaseStage/<stage>/<points>.
+echo "| a case's stage (us) | 8-point hulls | 32-point hulls |"
+echo "|---|---|---|"
+awk '/^BM_CaseStage\// { split($1, name, "/"); us[name[2], name[3]] = $2; if (!(name[2] in seen)) { seen[name[2]] = 1; order[++n] = name[2] } }
+     END { for (i = 1; i <= n; ++i) printf "| %s | %s | %s |\n", order[i], us[order[i], "8"], us[order[i], "32"] }' \
+  "$out/property_bench.txt"
