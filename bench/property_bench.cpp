@@ -49,9 +49,9 @@ BENCHMARK(BM_InvariantsPerCase)->Arg(8)->Arg(32)->Unit(benchmark::kMicrosecond);
 // than the hull cache keeps, so each is built again, as for a fuzz input of
 // new points), one generator call, the oracles together and each alone, the
 // invariants, and each relation whole (its generator calls and the
-// invariants of its runs). On 32-point hulls the stages add up to the
-// case's time; on 8-point hulls to four fifths of it (each stage runs hot
-// in the cache here).
+// invariants of its runs). On 32-point hulls the stages add up to about
+// the case's time; on 8-point hulls to four fifths of it (each stage runs
+// hot in the cache here).
 void BM_CaseStage(benchmark::State& state, const std::string& stage) {
   const std::vector<CaseFile> cases = random_cases(static_cast<int>(state.range(0)));
   const auto session = in_process_session(Generator::builtin());

@@ -4,8 +4,9 @@
 # run of bench/generator_bench on one pinned core, built at -O3 (the `bench`
 # preset, build/bench); then the harness's own throughput (property cases
 # and fuzz executions per second, bench/property_bench and
-# bench/fuzz_target_bench) and a case's time stage by stage. Google Benchmark's reports go to OUT/; the
-# table, with the machine it ran on, to stdout. Time it on a quiet machine.
+# bench/fuzz_target_bench) and a case's time stage by stage. Google
+# Benchmark's reports go to OUT/; the tables, with the machine they ran on,
+# to stdout. Time it on a quiet machine.
 #
 #   scripts/bench_table.sh [OUT]   (default: bench-results)
 set -euo pipefail

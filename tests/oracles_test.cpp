@@ -143,6 +143,23 @@ TEST(BruteForceSat, CoincidentCubesTieBetweenOppositeAxes) {
   EXPECT_TRUE(has_axis_tie(rank_sat_axes(s), 1e-9));
 }
 
+// Two boxes turned by one rotation: their edges in three directions, each
+// pair of the same direction parallel to rounding (a cross product of 1e-16,
+// not zero), spans no axis; the 96 pairs of different directions each give
+// one unit axis.
+TEST(BruteForceSat, EdgesParallelToRoundingSpanNoAxis) {
+  const Quat turn = Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  const Scene s = scene_of(test::make_case(box_points(1, 1, 1), {Vec3::Zero(), turn}, box_points(0.5, 0.7, 0.9),
+                                           {Vec3(0.3, 0.2, 0.1), turn}));
+  int edge_axes = 0;
+  for (const RankedAxis& axis : rank_sat_axes(s))
+    if (axis.kind == AxisKind::edge_edge) {
+      ++edge_axes;
+      EXPECT_NEAR(axis.normal.norm(), 1, 1e-15);
+    }
+  EXPECT_EQ(edge_axes, 96);
+}
+
 // Two needles crossing through each other (a minimised case from check)
 // overlap by about their thickness along the edge axis either way: n and -n
 // are both minimal, and only the reverse overlap shows it.

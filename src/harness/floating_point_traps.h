@@ -9,9 +9,10 @@
 /// with two register moves: glibc's feclearexcept, feenableexcept and
 /// fedisableexcept also rewrite the x87 unit's state, and cost 3.8% of an
 /// 8-point fuzz execution (perf on fuzz_target_bench).
-#include <cfenv>
 #if defined(__x86_64__) && defined(__SSE2__)
 #include <xmmintrin.h>
+#else
+#include <cfenv>
 #endif
 
 namespace mfz {
