@@ -38,6 +38,38 @@ TEST(HullTopology, EveryEdgeOfABoxMeetsTheFacesEitherSide) {
   }
 }
 
+TEST(HullTopology, ACubesTwelveEdgesFallInThreeZonesOfParallelEdges) {
+  const Hull hull = box(3, 2, 1);
+  const HullTopology* topology = topology_of(hull.view());
+  ASSERT_NE(topology, nullptr);
+  ASSERT_TRUE(topology->has_cube_loops());
+  std::set<int> seen;
+  for (int z = 0; z < 3; ++z) {
+    const TopologyEdge& first = topology->edge(topology->zone_edge(z, 0));
+    const Vec3 direction = hull.vertex(first.v1) - hull.vertex(first.v0);
+    for (int k = 0; k < 4; ++k) {
+      const int e = topology->zone_edge(z, k);
+      if (k > 0) EXPECT_LT(topology->zone_edge(z, k - 1), e) << "a zone's edges ascend";
+      seen.insert(e);
+      const TopologyEdge& edge = topology->edge(e);
+      EXPECT_EQ(direction.cross(hull.vertex(edge.v1) - hull.vertex(edge.v0)).norm(), 0.0) << "zone " << z;
+    }
+  }
+  EXPECT_EQ(seen.size(), 12u) << "each edge in one zone";
+  EXPECT_LT(topology->zone_edge(0, 0), topology->zone_edge(1, 0));
+  EXPECT_LT(topology->zone_edge(1, 0), topology->zone_edge(2, 0));
+}
+
+TEST(HullTopology, OnlyACubesLoopsHaveZones) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const Hull hull = random_hull(8, seed);
+    const HullTopology* topology = topology_of(hull.view());
+    ASSERT_NE(topology, nullptr);
+    // Eight points in general position make twelve triangles.
+    EXPECT_FALSE(topology->has_cube_loops()) << "seed " << seed;
+  }
+}
+
 TEST(HullTopology, TheFaceAcrossEachLoopStepIsItsTwinsFace) {
   const Hull hull = box(2, 1, 0.5);
   const HullTopology* topology = topology_of(hull.view());

@@ -7,6 +7,7 @@
 #include "generator/coplanar_patch.h"
 #include "generator/arc_grid.h"
 #include "generator/edge_arcs.h"
+#include "geometry/parallelepiped.h"
 #include "geometry/tolerances.h"
 
 namespace mfz {
@@ -40,9 +41,8 @@ bool parallel_face_tie(const PosedHull&, const PosedHull&, const SatResult& x, c
 // a face normal still proves separation, but the hull's support along it is
 // an edge or a vertex, not that face, and the penetration axis lies among
 // the other candidates.
-bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind kind, int fa, int fb,
-              SatResult& best) {
-  const Interval ia = a.project(axis), ib = b.project(axis);
+bool consider_projected(const PosedHull& a, const PosedHull& b, const Interval& ia, const Interval& ib,
+                        const Vec3& axis, AxisKind kind, int fa, int fb, SatResult& best) {
   const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;
   if (b_above < 0 || b_below < 0) {
     const bool along = b_above <= b_below;
@@ -74,6 +74,10 @@ bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind
   return true;
 }
 
+bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind kind, int fa, int fb,
+              SatResult& best) {
+  return consider_projected(a, b, a.project(axis), b.project(axis), axis, kind, fa, fb, best);
+}
 
 // One edge pair's axis. Returns false when it separates. `flat` says whether
 // either edge lies between coplanar faces; it is asked only of an axis about
@@ -126,6 +130,47 @@ SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
   return best;
 }
 
+// The edge of a zone that supports the hull along `direction`: of parallel
+// edges, the one furthest along it (the first of equals).
+int supporting_zone_edge(const PosedHull& hull, int zone, const Vec3& direction) {
+  const HullTopology& topology = *hull.topology();
+  int best = topology.zone_edge(zone, 0);
+  double best_d = direction.dot(hull.world_vertex(topology.edge(best).v0));
+  for (int k = 1; k < 4; ++k) {
+    const int e = topology.zone_edge(zone, k);
+    const double d = direction.dot(hull.world_vertex(topology.edge(e).v0));
+    if (d > best_d) best = e, best_d = d;
+  }
+  return best;
+}
+
+// Two parallelepipeds (geometry/parallelepiped.h): one edge pair per pair of
+// directions, each zone's first edge standing for its four, in the order of
+// those edges. Every pair of directions spans faces of the Minkowski
+// difference and all its edge pairs share one axis, so the nine axes are the
+// candidates the Gauss-map test would keep, without building the arcs or
+// bounding the 18 or so pairs it keeps (boxes spent two thirds of a call in
+// the edge phase). The winning axis is then named by the edges that support
+// it, as the crossing pair would have been.
+bool parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult& best) {
+  const HullTopology &ta = *a.topology(), &tb = *b.topology();
+  int won_a = -1, won_b = -1;
+  bool separated = false;
+  for (int za = 0; za < 3 && !separated; ++za)
+    for (int zb = 0; zb < 3 && !separated; ++zb) {
+      const int ea = ta.zone_edge(za, 0), eb = tb.zone_edge(zb, 0);
+      const TopologyEdge &x = ta.edge(ea), &y = tb.edge(eb);
+      const SatResult before = best;
+      separated = !consider_edge_pair(a, b, ea, x.v0, x.v1, eb, y.v0, y.v1, best, [] { return false; });
+      if (separated || best.depth != before.depth || best.kind != before.kind) won_a = za, won_b = zb;
+    }
+  if (won_a >= 0 && best.kind == AxisKind::edge_edge) {
+    best.feature_a = supporting_zone_edge(a, won_a, best.normal);
+    best.feature_b = supporting_zone_edge(b, won_b, -best.normal);
+  }
+  return !separated;
+}
+
 // The bounded SAT: the same candidates in the same order, each first given a
 // cheap lower bound on its overlap, and measured in full (by `consider`, as
 // before) only when the bound leaves it a chance to win or to tie. For a
@@ -158,11 +203,14 @@ HullSummary summary_of(const PosedHull& hull) {
   HullSummary s;
   for (int i = 0; i < hull.vertex_count(); ++i) s.centre += hull.world_vertex(i);
   s.centre /= static_cast<double>(hull.vertex_count());
+  // The square root of the largest square is the largest root, to the bit.
+  double reach2 = 0;
   for (int i = 0; i < hull.vertex_count(); ++i) {
     const Vec3 p = hull.world_vertex(i);
-    s.reach = std::max(s.reach, (p - s.centre).norm());
+    reach2 = std::max(reach2, (p - s.centre).squaredNorm());
     s.extent = std::max(s.extent, p.cwiseAbs().maxCoeff());
   }
+  s.reach = std::sqrt(reach2);
   return s;
 }
 
@@ -254,6 +302,14 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   for (int f = 0; f < a.face_count(); ++f) {
     const Vec3 n = a.world_face_normal(f);
     if (face_balls && hopeless(n.dot(a.world_face_point(f, 0) - sb.centre) + sb.inner)) continue;
+    if (scan_pairs) {
+      // Small hulls: B's whole projection bounds the face, and is kept for
+      // `consider` if the face has a chance.
+      const Interval ib = b.project(n);
+      if (hopeless(face_top(a, f, n) - ib.min)) continue;
+      if (!consider_projected(a, b, a.project(n), ib, n, AxisKind::face_a, f, -1, best)) return best;
+      continue;
+    }
     on_b = support_towards(b, -n, on_b);
     if (hopeless(face_top(a, f, n) - n.dot(b.world_vertex(on_b)))) continue;
     if (!consider(a, b, n, AxisKind::face_a, f, -1, best)) return best;
@@ -261,9 +317,19 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   for (int f = 0; f < b.face_count(); ++f) {
     const Vec3 n = b.world_face_normal(f);
     if (face_balls && hopeless(n.dot(b.world_face_point(f, 0) - sa.centre) + sa.inner)) continue;
+    if (scan_pairs) {
+      const Interval ia = a.project(n);
+      if (hopeless(face_top(b, f, n) - ia.min)) continue;
+      if (!consider_projected(a, b, ia, b.project(n), n, AxisKind::face_b, -1, f, best)) return best;
+      continue;
+    }
     on_a = support_towards(a, -n, on_a);
     if (hopeless(face_top(b, f, n) - n.dot(a.world_vertex(on_a)))) continue;
     if (!consider(a, b, n, AxisKind::face_b, -1, f, best)) return best;
+  }
+  if (is_parallelepiped(a) && is_parallelepiped(b)) {
+    parallelepiped_edge_axes(a, b, best);
+    return best;
   }
   // The arcs and the grid live in thread-local storage, not on the call's
   // stack (about 84 KB for 128-point hulls); a call runs to its end before

@@ -53,6 +53,44 @@ constexpr size_t kLargestEntry =
      kAlignment - 1) / kAlignment * kAlignment;
 static_assert(kTopologyStoreBytes >= 64 * kLargestEntry, "the ring must hold many of the largest topologies");
 
+// Zones of a cube's loops: an edge's zone holds the edge opposite it in
+// each of its two faces, and theirs in turn. Twelve edges in three zones of
+// four, or the loops are not a cube's and `zones` starts with -1.
+void find_cube_zones(int faces, const int32_t* offsets, const int32_t* loops, const TopologyEdge* edges,
+                     int edge_count, int32_t (&zones)[3][4]) {
+  zones[0][0] = -1;
+  if (faces != 6 || edge_count != 12 || offsets[faces] != 24) return;
+  // The edge of each loop step, by its two ends.
+  int step_edge[24];
+  for (int i = 0; i < 24; ++i) {
+    const int f = i / 4;
+    if (offsets[f] != 4 * f) return;
+    const int v0 = loops[i], v1 = loops[4 * f + (i + 1) % 4];
+    step_edge[i] = -1;
+    for (int e = 0; e < edge_count; ++e)
+      if ((edges[e].v0 == v0 && edges[e].v1 == v1) || (edges[e].v0 == v1 && edges[e].v1 == v0)) step_edge[i] = e;
+  }
+  int zone_of[12];
+  std::fill(zone_of, zone_of + 12, -1);
+  for (int z = 0; z < 3; ++z) {
+    const int first = static_cast<int>(std::find(zone_of, zone_of + 12, -1) - zone_of);
+    if (first == 12) return;
+    int queue[12], queued = 0;
+    zone_of[first] = z, queue[queued++] = first;
+    for (int at = 0; at < queued; ++at)
+      for (int i = 0; i < 24; ++i) {
+        if (step_edge[i] != queue[at]) continue;
+        const int opposite = step_edge[4 * (i / 4) + (i + 2) % 4];
+        if (opposite < 0 || zone_of[opposite] >= 0) continue;
+        if (queued == 4) return;
+        zone_of[opposite] = z, queue[queued++] = opposite;
+      }
+    if (queued != 4) return;
+  }
+  int filled[3] = {};
+  for (int e = 0; e < 12; ++e) zones[zone_of[e]][filled[zone_of[e]]++] = e;
+}
+
 }  // namespace
 
 // The ring: topologies are written one after another at the head; when the
@@ -234,6 +272,7 @@ const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, En
   }
   for (int v = 0; v < vertices; ++v)
     if (degree[v] < 3) return nullptr;  // a vertex in no corner of the polyhedron
+  find_cube_zones(faces, offsets, loops, edges, edge_count, t->cube_zones_);
   entry = {hash, static_cast<uint64_t>(reinterpret_cast<std::byte*>(t) - arena_.get()), lap_};
   return t;
 }

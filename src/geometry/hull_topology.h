@@ -2,7 +2,8 @@
 /// \file
 /// What a hull's face loops say, worked out once per hull instead of once
 /// per generator call: its edges in SAT's order with the faces either side,
-/// the face across every loop step, and each vertex's neighbours. Loops alone
+/// the face across every loop step, each vertex's neighbours, and a cube's
+/// edge zones. Loops alone
 /// decide it, so the loops are the key, compared in full (never the address:
 /// the next hull a caller builds often lands where the last one was freed).
 ///
@@ -50,6 +51,16 @@ class HullTopology {
   const int32_t* neighbours_begin(int v) const { return words() + neighbours_at_ + words()[neighbour_offsets_at_ + v]; }
   const int32_t* neighbours_end(int v) const { return words() + neighbours_at_ + words()[neighbour_offsets_at_ + v + 1]; }
 
+  /// Loops that are a cube's (eight corners of three edges, six four-sided
+  /// faces) put the twelve edges in three zones of four: the edges opposite
+  /// one another across a face are in one zone. On a parallelepiped a
+  /// zone's edges are parallel, so twelve edges give three directions
+  /// (geometry/parallelepiped.h checks that). False for other loops.
+  bool has_cube_loops() const { return cube_zones_[0][0] >= 0; }
+  /// The k-th edge (0-3, ascending) of zone z (0-2, in order of their first
+  /// edges); only when has_cube_loops().
+  int zone_edge(int z, int k) const { return cube_zones_[z][k]; }
+
  private:
   friend class TopologyStore;
   const int32_t* words() const { return reinterpret_cast<const int32_t*>(this + 1); }
@@ -59,6 +70,7 @@ class HullTopology {
   /// Where each array starts, in words after the header: the face offsets
   /// (at 0) and loops come first, as the hull gave them.
   int32_t loops_at_, across_at_, edges_at_, neighbour_offsets_at_, neighbours_at_, size_words_;
+  int32_t cube_zones_[3][4];
 };
 
 /// The topology of `hull` from this thread's store, built on a miss; nullptr

@@ -20,8 +20,10 @@ struct Interval {
 };
 
 /// True when two unit face normals belong to one plane (tol::kCoplanarSine).
+/// Normals more than 60 degrees apart are not, whatever the rounding of the
+/// sine: the dot product alone turns most pairs away (a box's faces).
 inline bool coplanar_normals(const Vec3& n1, const Vec3& n2) {
-  return n1.dot(n2) > 0 && n1.cross(n2).norm() <= tol::kCoplanarSine;
+  return n1.dot(n2) > 0.5 && n1.cross(n2).norm() <= tol::kCoplanarSine;
 }
 
 /// World vertices are cached on the stack for hulls up to this size (larger

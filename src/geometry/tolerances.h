@@ -147,6 +147,16 @@ inline constexpr double kHullConvexity = 1e-9;
 /// and is skipped (guarded normalisation).
 inline constexpr double kParallelEdges = 1e-9;
 
+/// Generator: a hull with a cube's loops is a parallelepiped, and SAT tries
+/// one axis per pair of edge directions, when the edges of each zone are
+/// parallel to this sine in the hull's own frame (a box's are, exactly) and
+/// the three directions are far from coplanar (kZoneSpan). Its axes then
+/// differ from the edge pair's own by as little, which moves an overlap by
+/// 1e-12 of the hull's size, below every tolerance that compares them.
+inline constexpr double kZoneParallelSine = 1e-12;
+/// The three directions' triple product, over the product of their lengths.
+inline constexpr double kZoneSpan = 1e-3;
+
 /// Generator: two faces lie in one plane when the sine of the angle between
 /// their normals is at most this (and the normals point the same way). A
 /// patch of faces that far apart bends by at most 1e-11 of its size, below
