@@ -208,11 +208,17 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
     return 0;
   }
 
+  // F8: on a face axis, that face is its hull's significant face, and the
+  // hull's support vertex is asked for only where it is read: a trace, or a
+  // face of fewer than three corners (single_point_contact).
   int support_a = -1, support_b = -1;
-  ClipFace face_a{&a, significant_face(a, n, support_a, true), {}};
-  ClipFace face_b{&b, significant_face(b, -n, support_b, true), {}};
-  if (sat.kind == AxisKind::face_a) face_a.index = sat.feature_a;  // F8
-  if (sat.kind == AxisKind::face_b) face_b.index = sat.feature_b;
+  ClipFace face_a{&a, sat.kind == AxisKind::face_a ? sat.feature_a : significant_face(a, n, support_a, true), {}};
+  ClipFace face_b{&b, sat.kind == AxisKind::face_b ? sat.feature_b : significant_face(b, -n, support_b, true), {}};
+  const auto needs_support = [&](const ClipFace& face, int support) {
+    return support < 0 && face.index >= 0 && (trace || face.hull->face_size(face.index) < 3);
+  };
+  if (needs_support(face_a, support_a)) support_a = a.support_vertex(n);
+  if (needs_support(face_b, support_b)) support_b = b.support_vertex(-n);
   if (trace) trace->face_a = face_a.index, trace->face_b = face_b.index, trace->support_a = support_a,
              trace->support_b = support_b;
   if (face_a.index < 0 || face_b.index < 0) return 1;  // a vertex in no face: not a hull
