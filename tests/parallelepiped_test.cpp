@@ -34,37 +34,42 @@ TEST(Parallelepiped, BoxesAndShearedBoxesAre) {
   EXPECT_TRUE(parallelepiped(*build_hull(sheared_box_points(1, 1, 1, 0.4, -0.7)).hull));
 }
 
-TEST(Parallelepiped, ACubesLoopsWithACornerMovedAreNot) {
-  // The box's own loops and normals, one corner pulled out by 1e-6: the
-  // loops are still a cube's, the edges of two zones no longer parallel.
-  const Hull box = *build_hull(test::box_points(1, 1, 1)).hull;
+// A unit box's corners, loops and normals, to be put together again with
+// changes (Hull::from_faces, no validation).
+struct BoxParts {
   std::vector<Vec3> vertices;
   std::vector<std::vector<int>> loops;
   std::vector<Vec3> normals;
-  for (int i = 0; i < box.vertex_count(); ++i) vertices.push_back(box.vertex(i));
-  for (int f = 0; f < box.face_count(); ++f) {
-    loops.emplace_back();
-    for (int k = 0; k < box.face_size(f); ++k) loops.back().push_back(box.face_vertex(f, k));
-    normals.push_back(box.face_normal(f));
+  Hull box = *build_hull(test::box_points(1, 1, 1)).hull;
+  BoxParts() {
+    for (int i = 0; i < box.vertex_count(); ++i) vertices.push_back(box.vertex(i));
   }
-  EXPECT_TRUE(parallelepiped(Hull::from_faces(vertices, loops, normals)));
-  vertices[0] *= 1 + 1e-6;
-  EXPECT_FALSE(parallelepiped(Hull::from_faces(vertices, loops, normals)));
+};
+
+TEST(Parallelepiped, ACubesLoopsWithACornerMovedAreNot) {
+  // The box's own loops and normals, one corner pulled out by 1e-6: the
+  // loops are still a cube's, the edges of two zones no longer parallel.
+  BoxParts parts;
+  for (int f = 0; f < parts.box.face_count(); ++f) {
+    parts.loops.emplace_back();
+    for (int k = 0; k < parts.box.face_size(f); ++k) parts.loops.back().push_back(parts.box.face_vertex(f, k));
+    parts.normals.push_back(parts.box.face_normal(f));
+  }
+  EXPECT_TRUE(parallelepiped(Hull::from_faces(parts.vertices, parts.loops, parts.normals)));
+  parts.vertices[0] *= 1 + 1e-6;
+  EXPECT_FALSE(parallelepiped(Hull::from_faces(parts.vertices, parts.loops, parts.normals)));
 }
 
 TEST(Parallelepiped, OtherLoopsAreNot) {
   // A triangulated box: its loops are not a cube's (twelve triangles).
-  const Hull box = *build_hull(test::box_points(1, 1, 1)).hull;
-  std::vector<Vec3> vertices;
-  std::vector<std::vector<int>> loops;
-  std::vector<Vec3> normals;
-  for (int i = 0; i < box.vertex_count(); ++i) vertices.push_back(box.vertex(i));
+  BoxParts parts;
+  const Hull& box = parts.box;
   for (int f = 0; f < box.face_count(); ++f)
     for (int k = 1; k + 1 < box.face_size(f); ++k) {
-      loops.push_back({box.face_vertex(f, 0), box.face_vertex(f, k), box.face_vertex(f, k + 1)});
-      normals.push_back(box.face_normal(f));
+      parts.loops.push_back({box.face_vertex(f, 0), box.face_vertex(f, k), box.face_vertex(f, k + 1)});
+      parts.normals.push_back(box.face_normal(f));
     }
-  EXPECT_FALSE(parallelepiped(Hull::from_faces(vertices, loops, normals)));
+  EXPECT_FALSE(parallelepiped(Hull::from_faces(parts.vertices, parts.loops, parts.normals)));
   // Eight points that are no box: a hull of other loops.
   EXPECT_FALSE(parallelepiped(*build_hull(test::sphere_points(8, 3)).hull));
   EXPECT_FALSE(parallelepiped(*build_hull(test::tetrahedron_points()).hull));
