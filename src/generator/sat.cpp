@@ -174,9 +174,9 @@ bool parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult&
 // The bounded SAT: the same candidates in the same order, each first given a
 // cheap lower bound on its overlap, and measured in full (by `consider`, as
 // before) only when the bound leaves it a chance to win or to tie. For a
-// face of A, A's top along its normal is at least the face's own top and B's
-// bottom at most that of any vertex of B, here the one a climb on B's
-// vertices reaches; for an edge pair, the edges' own vertices bound the
+// face of A, A's top along its normal is at least the face's own height and
+// B's bottom at most that of any vertex of B, here the one a climb on B's
+// vertices reaches (on hulls of up to 32 vertices, B's projection itself); for an edge pair, the edges' own vertices bound the
 // overlap one way, the balls inside the hulls about their centres the other
 // way, each closed in by a climb where it leaves the pair a chance (a
 // 128-point pair measures 0.9 of its 323 crossing pairs in full, a 64-gon
@@ -225,12 +225,11 @@ void add_inner_ball(const PosedHull& hull, HullSummary& s) {
   s.inner = std::max(0.0, s.inner - 4 * tol::world_rounding(s.extent + s.reach));
 }
 
-// The highest of face f's own vertices along its normal n.
-double face_top(const PosedHull& hull, int f, const Vec3& n) {
-  double top = -std::numeric_limits<double>::infinity();
-  for (int k = 0; k < hull.face_size(f); ++k) top = std::max(top, n.dot(hull.world_face_point(f, k)));
-  return top;
-}
+// A corner of face f along its normal n: like any vertex, at most the
+// hull's top along n, which is all a lower bound on the overlap needs, and
+// the face's corners all lie on its plane, so the first is as high as the
+// highest to rounding (taking the highest was 6% of a box pair's call).
+double face_height(const PosedHull& hull, int f, const Vec3& n) { return n.dot(hull.world_face_point(f, 0)); }
 
 // Hulls of more vertices than this climb to their support (it needs their
 // topology, built on first sight); smaller ones scan their vertices.
@@ -306,12 +305,12 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
       // Small hulls: B's whole projection bounds the face, and is kept for
       // `consider` if the face has a chance.
       const Interval ib = b.project(n);
-      if (hopeless(face_top(a, f, n) - ib.min)) continue;
+      if (hopeless(face_height(a, f, n) - ib.min)) continue;
       if (!consider_projected(a, b, a.project(n), ib, n, AxisKind::face_a, f, -1, best)) return best;
       continue;
     }
     on_b = support_towards(b, -n, on_b);
-    if (hopeless(face_top(a, f, n) - n.dot(b.world_vertex(on_b)))) continue;
+    if (hopeless(face_height(a, f, n) - n.dot(b.world_vertex(on_b)))) continue;
     if (!consider(a, b, n, AxisKind::face_a, f, -1, best)) return best;
   }
   for (int f = 0; f < b.face_count(); ++f) {
@@ -319,12 +318,12 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     if (face_balls && hopeless(n.dot(b.world_face_point(f, 0) - sa.centre) + sa.inner)) continue;
     if (scan_pairs) {
       const Interval ia = a.project(n);
-      if (hopeless(face_top(b, f, n) - ia.min)) continue;
+      if (hopeless(face_height(b, f, n) - ia.min)) continue;
       if (!consider_projected(a, b, ia, b.project(n), n, AxisKind::face_b, -1, f, best)) return best;
       continue;
     }
     on_a = support_towards(a, -n, on_a);
-    if (hopeless(face_top(b, f, n) - n.dot(a.world_vertex(on_a)))) continue;
+    if (hopeless(face_height(b, f, n) - n.dot(a.world_vertex(on_a)))) continue;
     if (!consider(a, b, n, AxisKind::face_b, -1, f, best)) return best;
   }
   if (is_parallelepiped(a) && is_parallelepiped(b)) {
