@@ -44,20 +44,37 @@ struct BoxParts {
   BoxParts() {
     for (int i = 0; i < box.vertex_count(); ++i) vertices.push_back(box.vertex(i));
   }
+  /// The box's own six loops and normals.
+  void take_own_loops() {
+    for (int f = 0; f < box.face_count(); ++f) {
+      loops.emplace_back();
+      for (int k = 0; k < box.face_size(f); ++k) loops.back().push_back(box.face_vertex(f, k));
+      normals.push_back(box.face_normal(f));
+    }
+  }
 };
 
 TEST(Parallelepiped, ACubesLoopsWithACornerMovedAreNot) {
   // The box's own loops and normals, one corner pulled out by 1e-6: the
   // loops are still a cube's, the edges of two zones no longer parallel.
   BoxParts parts;
-  for (int f = 0; f < parts.box.face_count(); ++f) {
-    parts.loops.emplace_back();
-    for (int k = 0; k < parts.box.face_size(f); ++k) parts.loops.back().push_back(parts.box.face_vertex(f, k));
-    parts.normals.push_back(parts.box.face_normal(f));
-  }
+  parts.take_own_loops();
   EXPECT_TRUE(parallelepiped(Hull::from_faces(parts.vertices, parts.loops, parts.normals)));
   parts.vertices[0] *= 1 + 1e-6;
   EXPECT_FALSE(parallelepiped(Hull::from_faces(parts.vertices, parts.loops, parts.normals)));
+}
+
+TEST(Parallelepiped, BoxesTooThinOrTooLargeToMeasureAreNot) {
+  // A box of zero height has no volume; one 1e200 across overflows the
+  // measure, and takes the general path rather than a verdict of infinity.
+  BoxParts parts;
+  parts.take_own_loops();
+  std::vector<Vec3> flat = parts.vertices, huge = parts.vertices;
+  for (Vec3& p : flat) p.z() = 0;
+  for (Vec3& p : huge) p *= 1e200;
+  EXPECT_FALSE(parallelepiped(Hull::from_faces(flat, parts.loops, parts.normals)));
+  EXPECT_FALSE(parallelepiped(Hull::from_faces(huge, parts.loops, parts.normals)));
+  EXPECT_TRUE(parallelepiped(Hull::from_faces(parts.vertices, parts.loops, parts.normals)));
 }
 
 TEST(Parallelepiped, OtherLoopsAreNot) {

@@ -21,13 +21,18 @@ bool is_parallelepiped(const PosedHull& hull) {
     const double length2 = direction[z].squaredNorm();
     for (int k = 1; k < 4; ++k) {
       const Vec3 other = local_edge(hull, topology->edge(topology->zone_edge(z, k)));
-      // Squared, to spare three square roots: |d x o|^2 <= s^2 |d|^2 |o|^2.
+      // Squared, to spare the square roots: |d x o|^2 <= s^2 |d|^2 |o|^2.
       const double bound = tol::kZoneParallelSine * tol::kZoneParallelSine * length2 * other.squaredNorm();
       if (!(direction[z].cross(other).squaredNorm() <= bound)) return false;
     }
   }
-  const double volume = std::abs(direction[0].dot(direction[1].cross(direction[2])));
-  return volume >= tol::kZoneSpan * direction[0].norm() * direction[1].norm() * direction[2].norm();
+  // The same squared: volume^2 >= span^2 |d0|^2 |d1|^2 |d2|^2, with a
+  // product that neither vanishes nor overflows (a hull 1e200 across takes
+  // the general path).
+  const double volume = direction[0].dot(direction[1].cross(direction[2]));
+  const double needed = tol::kZoneSpan * tol::kZoneSpan * direction[0].squaredNorm() * direction[1].squaredNorm() *
+                        direction[2].squaredNorm();
+  return needed > 0 && std::isfinite(needed) && volume * volume >= needed;
 }
 
 }  // namespace mfz
