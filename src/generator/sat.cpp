@@ -173,25 +173,25 @@ bool parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult&
 
 // The bounded SAT: the same candidates in the same order, each first given a
 // cheap lower bound on its overlap, and measured in full (by `consider`, as
-// before) only when the bound leaves it a chance to win or to tie. For a
-// face of A, A's top along its normal is at least the face's own height and
-// B's bottom at most that of any vertex of B, here the one a climb on B's
-// vertices reaches (on hulls of up to 32 vertices, B's projection itself); for an edge pair, the edges' own vertices bound the
-// overlap one way, the balls inside the hulls about their centres the other
-// way, each closed in by a climb where it leaves the pair a chance (a
-// 128-point pair measures 0.9 of its 323 crossing pairs in full, a 64-gon
-// cylinder pair 0.2 of 2,198, where they measured 35 and 992 before the
-// balls and the climbs). Large hulls bound more at once, before any
-// climb: a face by the other hull's ball, and a whole row of edge pairs
-// (an arc of A against every arc of B) over the arc where their axes lie,
-// so that most rows and most of B's arcs never reach the grid (on
-// 128-point hulls 303 of 378 rows end there, and 304 of B's 378 arcs; the
-// family's calls take 1.7-2.6x less time, 32-point hulls' 1.3x less). A
-// skipped axis could not have changed `best`: its overlap exceeds the best
-// by more than any tie's slack. A face normal skipped this way is not a separating axis in its own
-// direction; reversed it may be, and then a later axis proves the
-// separation (SAT's axes in their own directions suffice), with another
-// normal, which a separated manifold does not report.
+// before) only when the bound leaves it a chance to win or to tie. For a face
+// of A, A's top along its normal is at least the face's own height and B's
+// bottom at most that of any vertex of B, here the one a climb on B's vertices
+// reaches (on hulls of up to 32 vertices, B's projection itself); for an edge
+// pair, the edges' own vertices bound the overlap one way, the balls inside the
+// hulls about their centres the other way, each closed in by a climb where it
+// leaves the pair a chance (a 128-point pair measures 0.9 of its 323 crossing
+// pairs in full, a 64-gon cylinder pair 0.2 of 2,198, where they measured 35
+// and 992 before the balls and the climbs). Large hulls bound more at once,
+// before any climb: a face by the other hull's ball, and a whole row of edge
+// pairs (an arc of A against every arc of B) over the arc where their axes lie,
+// so that most rows and most of B's arcs never reach the grid (on 128-point
+// hulls 303 of 378 rows end there, and 304 of B's 378 arcs; the family's calls
+// take 1.7-2.6x less time, 32-point hulls' 1.3x less). A skipped axis could not
+// have changed `best`: its overlap exceeds the best by more than any tie's
+// slack. A face normal skipped this way is not a separating axis in its own
+// direction; reversed it may be, and then a later axis proves the separation
+// (SAT's axes in their own directions suffice), with another normal, which a
+// separated manifold does not report.
 struct HullSummary {
   Vec3 centre = Vec3::Zero();
   double reach = 0;  ///< largest distance of a vertex from the centre
