@@ -99,6 +99,12 @@ TEST(ClippingGenerator, TipOfAIntoFaceOfBFlipsReferenceAndIncident) {
   mfz_manifold m;
   generate_clipping_manifold(a, run.scene.abi_pose_a(), b, run.scene.abi_pose_b(), m, &trace);
   EXPECT_TRUE(trace.flipped);
+  // The trace names each hull's support vertex, B's too, though SAT's face
+  // of B is the reference face and the generator needs no support there.
+  ASSERT_GE(trace.support_a, 0);
+  ASSERT_GE(trace.support_b, 0);
+  EXPECT_VEC_NEAR(run.scene.world_a[static_cast<size_t>(trace.support_a)], Vec3(0, 0, 0), kExact);
+  EXPECT_NEAR(run.scene.world_b[static_cast<size_t>(trace.support_b)].z(), -0.1, kExact);
   EXPECT_VEC_NEAR(to_vec(m.normal), Vec3(0, 0, 1), kExact);
   expect_contacts(m, {{Vec3(0, 0, 0), Vec3(0, 0, -0.1), -0.1}});
   expect_all_invariants_hold(run);

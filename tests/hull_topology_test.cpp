@@ -68,6 +68,18 @@ TEST(HullTopology, OnlyACubesLoopsHaveZones) {
     // Eight points in general position make twelve triangles.
     EXPECT_FALSE(topology->has_cube_loops()) << "seed " << seed;
   }
+  // A triangular prism with one corner cut off: eight corners of three
+  // edges and six faces like a cube, but two triangles, two quadrilaterals
+  // and two pentagons.
+  const Hull cut = *build_hull({Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 0), Vec3(1, 0, 1), Vec3(0, 1, 1),
+                                Vec3(0.3, 0, 1), Vec3(0, 0.3, 1), Vec3(0, 0, 0.7)})
+                        .hull;
+  ASSERT_EQ(cut.vertex_count(), 8);
+  ASSERT_EQ(cut.face_count(), 6);
+  ASSERT_EQ(cut.edges().size(), 12u);
+  const HullTopology* topology = topology_of(cut.view());
+  ASSERT_NE(topology, nullptr);
+  EXPECT_FALSE(topology->has_cube_loops());
 }
 
 TEST(HullTopology, TheFaceAcrossEachLoopStepIsItsTwinsFace) {

@@ -152,7 +152,7 @@ int supporting_zone_edge(const PosedHull& hull, int zone, const Vec3& direction)
 // bounding the 18 or so pairs it keeps (boxes spent two thirds of a call in
 // the edge phase). The winning axis is then named by the edges that support
 // it, as the crossing pair would have been.
-bool parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult& best) {
+void parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult& best) {
   const HullTopology &ta = *a.topology(), &tb = *b.topology();
   int won_a = -1, won_b = -1;
   bool separated = false;
@@ -168,7 +168,6 @@ bool parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult&
     best.feature_a = supporting_zone_edge(a, won_a, best.normal);
     best.feature_b = supporting_zone_edge(b, won_b, -best.normal);
   }
-  return !separated;
 }
 
 // The bounded SAT: the same candidates in the same order, each first given a

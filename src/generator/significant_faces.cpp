@@ -71,34 +71,16 @@ int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* ou
   const int support = hull.support_vertex(direction);
   FaceRank best;
   double most_parallel = -std::numeric_limits<double>::infinity();
-  // The faces at the support are kept from the first pass for the choice,
-  // up to a 128-point hull's 252 faces; a larger hull passes over its faces
-  // again.
-  struct AtSupport {
-    int face;
-    FaceRank rank;
-  };
-  AtSupport at_support[kTopologyMaxFaces];
-  int found = 0;
-  const bool keep = hull.face_count() <= kTopologyMaxFaces;
-  faces_at_support(hull, direction, support, true, [&](int f, double alignment, int held) {
-    const FaceRank rank{held, alignment};
-    if (rank.beats(best)) best = rank;
+  faces_at_support(hull, direction, support, true, [&](int, double alignment, int held) {
+    if (const FaceRank rank{held, alignment}; rank.beats(best)) best = rank;
     most_parallel = std::max(most_parallel, alignment);
-    if (keep) at_support[found++] = {f, rank};
   });
   int count = 0;
-  const auto choose = [&](int f, const FaceRank& rank) {
-    const bool holds_the_support = rank.held == best.held && rank.alignment >= best.alignment - tol::kTie;
-    const bool as_parallel = rank.alignment >= most_parallel - tol::kTie;
+  faces_at_support(hull, direction, support, true, [&](int f, double alignment, int held) {
+    const bool holds_the_support = held == best.held && alignment >= best.alignment - tol::kTie;
+    const bool as_parallel = alignment >= most_parallel - tol::kTie;
     if ((holds_the_support || as_parallel) && count < capacity) out[count++] = f;
-  };
-  if (keep) {
-    for (int i = 0; i < found; ++i) choose(at_support[i].face, at_support[i].rank);
-  } else {
-    faces_at_support(hull, direction, support, true,
-                     [&](int f, double alignment, int held) { choose(f, FaceRank{held, alignment}); });
-  }
+  });
   return count;
 }
 

@@ -3,9 +3,9 @@
 /// What a hull's face loops say, worked out once per hull instead of once
 /// per generator call: its edges in SAT's order with the faces either side,
 /// the face across every loop step, each vertex's neighbours, and a cube's
-/// edge zones. Loops alone
-/// decide it, so the loops are the key, compared in full (never the address:
-/// the next hull a caller builds often lands where the last one was freed).
+/// edge zones. Loops alone decide it, so the loops are the key, compared in
+/// full (never the address: the next hull a caller builds often lands where
+/// the last one was freed).
 ///
 /// Where it lives: each thread keeps a store of topologies, a ring of
 /// kTopologyStoreBytes reserved on the thread's first generator call (one
