@@ -30,7 +30,7 @@ void EdgeArcs::build(const PosedHull& hull) {
       arcs_[count_++] = {edge.v0, edge.v1, edge.face, edge.twin, n_face, n_twin, n_twin.cross(n_face)};
     }
     complete_ = true;
-    fill_columns();
+    fill_columns(hull);
     return;
   }
   for (int f = 0; f < hull.face_count(); ++f) {
@@ -43,14 +43,17 @@ void EdgeArcs::build(const PosedHull& hull) {
     }
   }
   complete_ = pair_twins(hull);
-  if (complete_) fill_columns();
+  if (complete_) fill_columns(hull);
 }
 
-void EdgeArcs::fill_columns() {
+void EdgeArcs::fill_columns(const PosedHull& hull) {
+  ArcColumns& c = columns_;
   for (int i = 0; i < count_; ++i) {
     const EdgeArc& arc = arcs_[i];
-    face_x_[i] = arc.n_face.x(), face_y_[i] = arc.n_face.y(), face_z_[i] = arc.n_face.z();
-    twin_x_[i] = arc.n_twin.x(), twin_y_[i] = arc.n_twin.y(), twin_z_[i] = arc.n_twin.z();
+    const Vec3 v0 = hull.world_vertex(arc.v0);
+    c.face_x[i] = arc.n_face.x(), c.face_y[i] = arc.n_face.y(), c.face_z[i] = arc.n_face.z();
+    c.twin_x[i] = arc.n_twin.x(), c.twin_y[i] = arc.n_twin.y(), c.twin_z[i] = arc.n_twin.z();
+    c.v0_x[i] = v0.x(), c.v0_y[i] = v0.y(), c.v0_z[i] = v0.z();
   }
 }
 
@@ -60,11 +63,12 @@ int EdgeArcs::straddling(const Vec3& across, int* out) const {
   constexpr double kLaneRounding = 1e-13;
   const double ax = across.x(), ay = across.y(), az = across.z();
   const int count = count_;
+  const ArcColumns& k = columns_;
   double product[kMaxArcs];
 #pragma omp simd
   for (int j = 0; j < count; ++j) {
-    const double c = face_x_[j] * ax + face_y_[j] * ay + face_z_[j] * az;
-    const double d = twin_x_[j] * ax + twin_y_[j] * ay + twin_z_[j] * az;
+    const double c = k.face_x[j] * ax + k.face_y[j] * ay + k.face_z[j] * az;
+    const double d = k.twin_x[j] * ax + k.twin_y[j] * ay + k.twin_z[j] * az;
     product[j] = c * d;
   }
   // Without a branch: a third or so of the arcs straddle, in no pattern a

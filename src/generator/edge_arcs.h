@@ -25,6 +25,14 @@ struct EdgeArc {
   Vec3 across;     ///< n_twin x n_face: normal to the arc's great circle
 };
 
+/// The arcs' ends and first vertices as columns (x, y, z apart), for loops
+/// over every arc at once in vector lanes.
+struct ArcColumns {
+  double face_x[kMaxArcs], face_y[kMaxArcs], face_z[kMaxArcs];  ///< n_face
+  double twin_x[kMaxArcs], twin_y[kMaxArcs], twin_z[kMaxArcs];  ///< n_twin
+  double v0_x[kMaxArcs], v0_y[kMaxArcs], v0_z[kMaxArcs];        ///< world v0
+};
+
 class EdgeArcs {
  public:
   EdgeArcs() = default;
@@ -36,6 +44,7 @@ class EdgeArcs {
   bool complete() const { return complete_; }
   int size() const { return count_; }
   const EdgeArc& operator[](int i) const { return arcs_[i]; }
+  const ArcColumns& columns() const { return columns_; }
 
   /// The arcs (of B) whose ends do not lie strictly on one side of the
   /// great circle normal to `across` (an arc of A's): the first of
@@ -47,13 +56,10 @@ class EdgeArcs {
 
  private:
   bool pair_twins(const PosedHull& hull);
-  void fill_columns();
+  void fill_columns(const PosedHull& hull);
 
   EdgeArc arcs_[kMaxArcs];
-  // The arcs' ends as columns (x, y, z of every face normal, then of every
-  // twin normal) for `straddling`.
-  double face_x_[kMaxArcs], face_y_[kMaxArcs], face_z_[kMaxArcs];
-  double twin_x_[kMaxArcs], twin_y_[kMaxArcs], twin_z_[kMaxArcs];
+  ArcColumns columns_;
   int count_ = 0;
   bool complete_ = false;
 };

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "generator/coplanar_patch.h"
+#include "generator/arc_bounds.h"
 #include "generator/arc_grid.h"
 #include "generator/edge_arcs.h"
 #include "geometry/parallelepiped.h"
@@ -241,31 +242,6 @@ constexpr int kClimbFromVertices = 64;
 // every bench pair).
 constexpr int kScanPairVertices = 32;
 
-// How far past its ends a row's bound looks along an arc: a pair's axis lies
-// on its arc where the arcs cross, and the Gauss-map test lets through pairs
-// whose arcs miss by up to 3e-5 rad; this is 30 times that.
-constexpr double kRowArcMargin = 1e-3;
-
-// Whether m . v > floor for every unit vector m on the arc, and on
-// kRowArcMargin past its ends (which moves m . v by at most that times |v|,
-// less than its L1 norm). The least of m . v on the arc is at an end, or
-// where the great circle comes nearest to -v, there -|v's part in the
-// circle's plane|. No square root: the ends decide most rows.
-bool above_on_arc(const EdgeArc& arc, const Vec3& v, double floor) {
-  floor += 2 * kRowArcMargin * v.lpNorm<1>();
-  const Vec3& p = arc.n_face;
-  const Vec3& q = arc.n_twin;
-  if (!(p.dot(v) > floor && q.dot(v) > floor)) return false;
-  const Vec3 circle = p.cross(q);
-  const double sine2 = circle.squaredNorm();
-  if (!(sine2 > kRowArcMargin * kRowArcMargin)) return p.dot(q) > 0;  // short: within the margin of its ends
-  const double along = circle.dot(v);
-  const Vec3 nearest = along * circle - sine2 * v;  // -v in the circle's plane, times sine2
-  if (!(p.cross(nearest).dot(circle) > 0 && nearest.cross(q).dot(circle) > 0)) return true;
-  if (!(floor < 0)) return false;
-  return v.squaredNorm() - along * along / sine2 < floor * floor;
-}
-
 // Hulls with more edge pairs than this bound each row of pairs first (and
 // B's arcs, where the grid finds the pairs).
 constexpr int kRowBoundPairs = 1000;
@@ -386,30 +362,30 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     }
     return true;
   };
-  // A whole row at once, before its candidates are found: every pair in it
-  // has its axis m on A's arc, where A's edge is A's support, so along m
-  // its overlap is at least m . (a0 - B's centre) + B's ball, and against m
-  // at least the balls' bound, both least somewhere on the arc. On large
-  // hulls most rows end here.
-  const auto row_is_hopeless = [&](const EdgeArc& x) {
-    if (!row_bounds) return false;
-    const Vec3 a0 = a.world_vertex(x.v0);
-    const double past = best.depth + tie_room;
-    return above_on_arc(x, a0 - sb.centre, past - sb.inner) && above_on_arc(x, centres, past - sa.inner - sb.inner);
-  };
+  // Whole rows at once, before their candidates are found: every pair in
+  // a row has its axis m on A's arc, where A's edge is A's support, so
+  // along m its overlap is at least m . (a0 - B's centre) + B's ball, and
+  // against m at least the balls' bound, both least somewhere on the arc.
+  // On large hulls most rows end here. All rows are bounded at once, in
+  // vector lanes, by the best depth when the phase starts: a shallower axis
+  // found later does not tighten the rows after it, which costs less than
+  // bounding each row in turn did (a fifth of a 128-point call).
+  const double past = best.depth + tie_room;
+  double row_margin[kMaxArcs];
+  if (row_bounds)
+    arcs_above(arcs_a, sb.centre, past - sb.inner, centres, past - sa.inner - sb.inner, row_margin);
+  else
+    std::fill(row_margin, row_margin + arcs_a.size(), 0.0);
   int near[kMaxArcs];
   const bool few_pairs = arcs_a.size() * arcs_b.size() < kArcGridMinPairs;
   if (!few_pairs) {
     // B's arcs bounded the same way, each over its arc negated (where -m
     // meets it, B's edge is B's support along -m): an arc whose every pair
     // is hopeless is left out of the grid.
+    double out_margin[kMaxArcs];
+    arcs_above(arcs_b, sa.centre, past - sa.inner, -centres, past - sa.inner - sb.inner, out_margin);
     bool left_out[kMaxArcs];
-    const double past = best.depth + tie_room;
-    for (int j = 0; j < arcs_b.size(); ++j) {
-      const EdgeArc& y = arcs_b[j];
-      left_out[j] = above_on_arc(y, b.world_vertex(y.v0) - sa.centre, past - sa.inner) &&
-                    above_on_arc(y, -centres, past - sa.inner - sb.inner);
-    }
+    for (int j = 0; j < arcs_b.size(); ++j) left_out[j] = out_margin[j] > 0;
     kept_grid.build(arcs_b, left_out);
   }
   if (few_pairs || 4 * kept_grid.unbinned() > arcs_b.size()) {
@@ -417,11 +393,11 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     // found for the whole row in vector lanes: the pair loop was most of a
     // small hull's SAT.
     for (int i = 0; i < arcs_a.size(); ++i)
-      if (!row_is_hopeless(arcs_a[i]) && !against(i, near, arcs_b.straddling(arcs_a[i].across, near))) return best;
+      if (!(row_margin[i] > 0) && !against(i, near, arcs_b.straddling(arcs_a[i].across, near))) return best;
     return best;
   }
   for (int i = 0; i < arcs_a.size(); ++i)
-    if (!row_is_hopeless(arcs_a[i]) && !against(i, near, kept_grid.candidates(arcs_a[i], near))) return best;
+    if (!(row_margin[i] > 0) && !against(i, near, kept_grid.candidates(arcs_a[i], near))) return best;
   return best;
 }
 
