@@ -91,11 +91,12 @@ TEST(EdgeArcs, AHullWithAnOpenEdgeIsNotComplete) {
 // The row filter in vector lanes must keep every pair the scalar test keeps,
 // the near-misses its slack lets through included: boxes face to face put
 // arc ends exactly on the other's great circles (products of 0), random
-// hulls of 8 to 128 points put them anywhere.
-TEST(EdgeArcs, TheStraddlingArcsHoldEveryPairTheGaussMapTestKeeps) {
+// hulls of 8 to 128 points put them anywhere. It keeps little more: the
+// lanes run the same three tests.
+TEST(EdgeArcs, TheCrossingArcsHoldEveryPairTheGaussMapTestKeeps) {
   std::vector<std::pair<std::vector<Vec3>, std::vector<Vec3>>> shapes = {{test::box_points(1, 1, 1), test::box_points(0.5, 0.5, 0.5)}};
   for (const int points : {8, 32, 128}) shapes.push_back({test::sphere_points(points, 7u * points), test::sphere_points(points, 11u * points)});
-  long kept = 0, straddling = 0, all = 0;
+  long kept = 0, crossing = 0;
   for (const auto& [points_a, points_b] : shapes) {
     const Hull a = *build_hull(points_a).hull, b = *build_hull(points_b).hull;
     const mfz_hull va = a.view(), vb = b.view();
@@ -106,20 +107,19 @@ TEST(EdgeArcs, TheStraddlingArcsHoldEveryPairTheGaussMapTestKeeps) {
       ASSERT_TRUE(arcs_a.complete() && arcs_b.complete());
       int row[kMaxArcs];
       for (int i = 0; i < arcs_a.size(); ++i) {
-        const int count = arcs_b.straddling(arcs_a[i].across, row);
+        const int count = arcs_b.crossing(arcs_a[i], row);
         ASSERT_TRUE(std::is_sorted(row, row + count));
         for (int j = 0; j < arcs_b.size(); ++j)
           if (may_span_minkowski_face(arcs_a[i], arcs_b[j])) {
             ++kept;
             ASSERT_TRUE(std::binary_search(row, row + count, j)) << "arcs " << i << " and " << j << " left out";
           }
-        straddling += count;
-        all += arcs_b.size();
+        crossing += count;
       }
     }
   }
   EXPECT_GT(kept, 0);
-  EXPECT_LT(straddling * 2, all) << "most arcs lie on one side of a great circle";
+  EXPECT_LE(crossing, kept + kept / 100) << "the lanes keep pairs the test drops";
 }
 
 // world_extent: the largest world coordinate, whose ulps bound the rounding;

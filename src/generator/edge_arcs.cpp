@@ -53,30 +53,41 @@ void EdgeArcs::fill_columns(const PosedHull& hull) {
     const Vec3 v0 = hull.world_vertex(arc.v0);
     c.face_x[i] = arc.n_face.x(), c.face_y[i] = arc.n_face.y(), c.face_z[i] = arc.n_face.z();
     c.twin_x[i] = arc.n_twin.x(), c.twin_y[i] = arc.n_twin.y(), c.twin_z[i] = arc.n_twin.z();
+    c.across_x[i] = arc.across.x(), c.across_y[i] = arc.across.y(), c.across_z[i] = arc.across.z();
     c.v0_x[i] = v0.x(), c.v0_y[i] = v0.y(), c.v0_z[i] = v0.z();
   }
 }
 
-int EdgeArcs::straddling(const Vec3& across, int* out) const {
+// With A's arc a -> b and B's negated c -> d: c . across_a times
+// d . across_a (the ends of B's arc either side of A's circle), then
+// a . across_b times b . across_b (A's either side of B's), then
+// c . across_a times b . across_b (one crossing, not its antipode). Each is
+// kept below the slack; the greatest of the three stands for them, so that
+// the lanes hold doubles only.
+int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
   // The ends are unit vectors and so is |across| at most: each dot product
   // is within a few ulps of the test's own, and so is their product.
   constexpr double kLaneRounding = 1e-13;
-  const double ax = across.x(), ay = across.y(), az = across.z();
+  const double ax = arc_a.across.x(), ay = arc_a.across.y(), az = arc_a.across.z();
+  const double px = arc_a.n_face.x(), py = arc_a.n_face.y(), pz = arc_a.n_face.z();
+  const double qx = arc_a.n_twin.x(), qy = arc_a.n_twin.y(), qz = arc_a.n_twin.z();
   const int count = count_;
   const ArcColumns& k = columns_;
-  double product[kMaxArcs];
+  double worst[kMaxArcs];
 #pragma omp simd
   for (int j = 0; j < count; ++j) {
     const double c = k.face_x[j] * ax + k.face_y[j] * ay + k.face_z[j] * az;
     const double d = k.twin_x[j] * ax + k.twin_y[j] * ay + k.twin_z[j] * az;
-    product[j] = c * d;
+    const double a = k.across_x[j] * px + k.across_y[j] * py + k.across_z[j] * pz;
+    const double b = k.across_x[j] * qx + k.across_y[j] * qy + k.across_z[j] * qz;
+    worst[j] = std::max(std::max(c * d, a * b), c * b);
   }
-  // Without a branch: a third or so of the arcs straddle, in no pattern a
-  // predictor could learn.
+  // Without a branch: which arcs cross follows no pattern a predictor
+  // could learn.
   int found = 0;
   for (int j = 0; j < count; ++j) {
     out[found] = j;
-    found += product[j] < tol::kGaussArcSlack + kLaneRounding;
+    found += worst[j] < tol::kGaussArcSlack + kLaneRounding;
   }
   return found;
 }

@@ -25,11 +25,12 @@ struct EdgeArc {
   Vec3 across;     ///< n_twin x n_face: normal to the arc's great circle
 };
 
-/// The arcs' ends and first vertices as columns (x, y, z apart), for loops
-/// over every arc at once in vector lanes.
+/// The arcs' ends, circles and first vertices as columns (x, y, z apart),
+/// for loops over every arc at once in vector lanes.
 struct ArcColumns {
   double face_x[kMaxArcs], face_y[kMaxArcs], face_z[kMaxArcs];  ///< n_face
   double twin_x[kMaxArcs], twin_y[kMaxArcs], twin_z[kMaxArcs];  ///< n_twin
+  double across_x[kMaxArcs], across_y[kMaxArcs], across_z[kMaxArcs];  ///< across
   double v0_x[kMaxArcs], v0_y[kMaxArcs], v0_z[kMaxArcs];        ///< world v0
 };
 
@@ -46,13 +47,12 @@ class EdgeArcs {
   const EdgeArc& operator[](int i) const { return arcs_[i]; }
   const ArcColumns& columns() const { return columns_; }
 
-  /// The arcs (of B) whose ends do not lie strictly on one side of the
-  /// great circle normal to `across` (an arc of A's): the first of
-  /// may_span_minkowski_face's tests, for every arc at once, in vector
-  /// lanes. A margin over the test's slack covers the lanes' other
+  /// The arcs (of B) that may cross `arc_a` (an arc of A's):
+  /// may_span_minkowski_face's three tests, for every arc at once, in
+  /// vector lanes. A margin over the test's slack covers the lanes' other
   /// rounding, so that every pair the test keeps is among these; the test
   /// itself then decides. Writes their indices to `out`; returns how many.
-  int straddling(const Vec3& across, int* out) const;
+  int crossing(const EdgeArc& arc_a, int* out) const;
 
  private:
   bool pair_twins(const PosedHull& hull);
