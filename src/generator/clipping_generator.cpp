@@ -28,6 +28,22 @@ bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution) {
   return false;
 }
 
+// F30: a point of a face nearly perpendicular to the reference face has its
+// height only to the world's rounding over the cosine, so where it stands in
+// the column of a point already kept (to the world's rounding, measured in
+// the reference plane) it adds nothing to the region's span, only a depth
+// that the moved frame puts elsewhere (rigid-motion, --strict --seed 12: a
+// face 1e-6 off perpendicular, 2.3e-10 beside the incident face's corner
+// 2e5 L from the origin, 8e-6 L higher).
+bool holds_column(const ClipPolygon& points, const Vec3& p, const Vec3& normal, double world_resolution) {
+  const double same = tol::world_rounding(std::max(world_resolution, p.cwiseAbs().maxCoeff()));
+  for (int k = 0; k < points.size(); ++k) {
+    const Vec3 apart = points[k] - p;
+    if ((apart - apart.dot(normal) * normal).norm() <= same) return true;
+  }
+  return false;
+}
+
 double largest_coordinate(const ClipPolygon& polygon) {
   double largest = 0;
   for (int k = 0; k < polygon.size(); ++k) largest = std::max(largest, polygon[k].cwiseAbs().maxCoeff());
@@ -50,7 +66,7 @@ void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
 // are added to `clipped` (each once). True when one was added.
 bool add_faces_below_reference(const PosedHull& incident, const int* done, int done_count,
                                const ClipFace& reference, const Plane& reference_plane, const ClippingSteps& steps,
-                               double resolution, ClipPolygon& clipped) {
+                               double world_resolution, ClipPolygon& clipped) {
   bool added = false;
   ClipPolygon polygon;
   for (int f = 0; f < incident.face_count(); ++f) {
@@ -65,7 +81,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     if (!steps.clip_to_sides(reference, polygon, nullptr)) continue;
     remove_points_outside(polygon, reference_plane);
     for (int k = 0; k < polygon.size(); ++k) {
-      if (holds_point(clipped, polygon[k], resolution)) continue;
+      if (holds_column(clipped, polygon[k], reference.normal, world_resolution)) continue;
       added = clipped.push(polygon[k]) || added;
     }
   }
@@ -193,7 +209,7 @@ ClippingSteps::ClippingSteps()
 namespace {
 
 int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_hull& hull_b, const Pose& pose_b,
-                          mfz_manifold& out, ClipTrace* trace, const ClippingSteps& steps) {
+                          double world_resolution, mfz_manifold& out, ClipTrace* trace, const ClippingSteps& steps) {
   const PosedHull a(hull_a, pose_a), b(hull_b, pose_b);
   const SatResult sat = steps.sat(a, b);
   if (trace) trace->sat = sat;
@@ -262,8 +278,8 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // them: keeping only the corners of their hull would leave a point on an
   // edge of it to rounding (swap-symmetry, --strict --seed 20261121).
   const int from_incident_faces = clipped.size();
-  if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps, resolution,
-                                clipped)) {
+  if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps,
+                                std::max(resolution, world_resolution), clipped)) {
     if (trace) record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
     // More than the ABI holds: the incident faces' own points, as before
     // F27, rather than a reduction of points in no loop order (a 59-point
@@ -299,7 +315,11 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   // face ties) by eps M.
   const Vec3 origin = pose_a.position;
   const Pose local_a{Vec3::Zero(), pose_a.orientation}, local_b{pose_b.position - origin, pose_b.orientation};
-  const int32_t status = generate_in_frame(hull_a, local_a, hull_b, local_b, out, trace, steps);
+  // The frame's coordinates are small; the world's rounding is what its
+  // positions carry in (F30).
+  const double world_resolution =
+      std::max(pose_a.position.cwiseAbs().maxCoeff(), pose_b.position.cwiseAbs().maxCoeff());
+  const int32_t status = generate_in_frame(hull_a, local_a, hull_b, local_b, world_resolution, out, trace, steps);
   shift_contacts(out, origin);
   if (trace)
     for (ClipTrace::Step& step : trace->steps)
