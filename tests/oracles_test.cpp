@@ -3,7 +3,9 @@
 
 #include <cmath>
 
+#include "case/case_file.h"
 #include "oracles/brute_force_sat.h"
+#include "oracles/contact_region.h"
 #include "oracles/exact_depth.h"
 #include "geometry/tolerances.h"
 #include "oracles/libccd_oracle.h"
@@ -171,6 +173,22 @@ TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
   ASSERT_EQ(axes[0].kind, AxisKind::edge_edge);
   EXPECT_LE(axes[0].reverse_overlap - axes[0].overlap, s.length_tolerance(1e-9));
   EXPECT_TRUE(has_axis_tie(axes, s.length_tolerance(1e-9)));
+}
+
+// A sheet whose two sides meet at 1.3e-8 rad pokes its corner 2.02 into a
+// tetrahedron's face. Within the first-touching 1% of that depth the
+// corner's edges (rising 0.25 and 0.49 along n per unit) hold the region to
+// under 0.1; the planes' slack alone let a point of A's edge 4.9 past the
+// knife edge in, and the region reached 9.6 (h10, manifuzz fuzz).
+TEST(ContactRegion, AKnifeEdgedSheetDoesNotReachPastItsEdge) {
+  const CaseParse parsed = read_case_file(test::corpus_path("regressions") + "/h10-a-knife-edged-sheet-at-the-origin.case");
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = scene_of(*parsed.value);
+  const RankedAxis best = rank_sat_axes(s).front();
+  const double slack = s.length_tolerance(tol::kRegionSlack);
+  const ContactRegion region = contact_region(s, best.normal, tol::kRegionFirstTouch * best.overlap * best.normal, slack);
+  ASSERT_FALSE(region.empty);
+  EXPECT_LT(region.width, 0.1);
 }
 
 TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {
