@@ -181,12 +181,13 @@ TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
 // under 0.1; the planes' slack alone let a point of A's edge 4.9 past the
 // knife edge in, and the region reached 9.6 (h10, manifuzz fuzz).
 TEST(ContactRegion, AKnifeEdgedSheetDoesNotReachPastItsEdge) {
-  const CaseParse parsed = read_case_file(test::corpus_path("regressions") + "/h10-a-knife-edged-sheet-at-the-origin.case");
+  const CaseParse parsed = read_case_file(test::corpus_path("regressions/h10-a-knife-edged-sheet-at-the-origin.case"));
   ASSERT_TRUE(parsed.value) << parsed.error;
   const Scene s = scene_of(*parsed.value);
   const RankedAxis best = rank_sat_axes(s).front();
   const double slack = s.length_tolerance(tol::kRegionSlack);
-  const ContactRegion region = contact_region(s, best.normal, tol::kRegionFirstTouch * best.overlap * best.normal, slack);
+  const Vec3 first_touch = tol::kRegionFirstTouch * best.overlap * best.normal;
+  const ContactRegion region = contact_region(s, best.normal, first_touch, slack);
   ASSERT_FALSE(region.empty);
   EXPECT_LT(region.width, 0.1);
 }

@@ -184,8 +184,9 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
   const Planes planes_a = world_planes(s.hull_a, s.pose_a, Vec3::Zero());
   const Planes planes_b = world_planes(s.hull_b, s.pose_b, shift_b);
   std::vector<Vec3> corners;
-  add_corners(s.hull_a, s.world_a, Vec3::Zero(), planes_a, Solid{s.hull_b, s.pose_b, shift_b, planes_b}, slack, corners);
-  add_corners(s.hull_b, s.world_b, shift_b, planes_b, Solid{s.hull_a, s.pose_a, Vec3::Zero(), planes_a}, slack, corners);
+  const Solid solid_a{s.hull_a, s.pose_a, Vec3::Zero(), planes_a}, solid_b{s.hull_b, s.pose_b, shift_b, planes_b};
+  add_corners(s.hull_a, s.world_a, Vec3::Zero(), planes_a, solid_b, slack, corners);
+  add_corners(s.hull_b, s.world_b, shift_b, planes_b, solid_a, slack, corners);
   ContactRegion region;
   if (corners.empty()) return region;
   region.facing_faces_a = facing_faces(planes_a, corners, n, slack);
