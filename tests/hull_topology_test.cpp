@@ -49,7 +49,9 @@ TEST(HullTopology, ACubesTwelveEdgesFallInThreeZonesOfParallelEdges) {
     const Vec3 direction = hull.vertex(first.v1) - hull.vertex(first.v0);
     for (int k = 0; k < 4; ++k) {
       const int e = topology->zone_edge(z, k);
-      if (k > 0) EXPECT_LT(topology->zone_edge(z, k - 1), e) << "a zone's edges ascend";
+      if (k > 0) {
+        EXPECT_LT(topology->zone_edge(z, k - 1), e) << "a zone's edges ascend";
+      }
       seen.insert(e);
       const TopologyEdge& edge = topology->edge(e);
       EXPECT_EQ(direction.cross(hull.vertex(edge.v1) - hull.vertex(edge.v0)).norm(), 0.0) << "zone " << z;

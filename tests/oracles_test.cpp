@@ -214,6 +214,19 @@ TEST(LibccdOracle, AnswersTheSameFarFromTheOriginAndAtAnyScale) {
   EXPECT_NEAR(small.epa_depth / s, 0.1, 1e-6);
 }
 
+// Two tetrahedra touching by 1.5e-42: libccd's EPA answered depth 0 along
+// (inf, inf, inf). An answer without a direction is EPA failing, and the
+// invariants then skip its bounds (h11, manifuzz fuzz: the overlap along
+// the NaN direction, -inf, failed the built-in's depth).
+TEST(LibccdOracle, AnAnswerWithoutADirectionIsNoAnswer) {
+  const std::string file = "regressions/h11-epa-answers-no-direction-at-a-touching-case.case";
+  const CaseParse parsed = read_case_file(test::corpus_path(file));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const LibccdAnswer answer = ask_libccd(scene_of(*parsed.value), true);
+  EXPECT_TRUE(!answer.epa_ok || answer.epa_direction.allFinite());
+  EXPECT_TRUE(!answer.mpr_ok || answer.mpr_direction.allFinite());
+}
+
 TEST(LibccdOracle, SeparatedHullsDoNotIntersect) {
   const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {}, box_points(0.5, 0.5, 0.5),
                                            {Vec3(1.5, 0, 0), Quat::Identity()}));

@@ -11,7 +11,7 @@ namespace mfz {
 
 struct LibccdAnswer {
   bool gjk_intersecting = false;
-  bool epa_ok = false;     ///< ccdGJKPenetration returned 0
+  bool epa_ok = false;     ///< ccdGJKPenetration returned 0 and a direction
   double epa_depth = 0;    ///< in the case's units
   Vec3 epa_direction = Vec3::UnitZ();  ///< unit; moving B along it separates
   bool mpr_ok = false;
