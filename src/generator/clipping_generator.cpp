@@ -20,14 +20,9 @@ constexpr int kMaxTiedFaces = 64;
 // Rounding is a few ulps of the coordinates the clip worked with (the
 // reference face's, `resolution`) whatever the hull's size: a relative
 // 1e-12 was 4500 ulps, and 1e6 L from the origin it merged the corners of a
-// slab 1e-6 thick (FINDINGS F19).
-bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution) {
-  const double same = tol::world_rounding(std::max(resolution, p.cwiseAbs().maxCoeff()));
-  for (int k = 0; k < points.size(); ++k)
-    if ((points[k] - p).norm() <= same) return true;
-  return false;
-}
-
+// slab 1e-6 thick (FINDINGS F19). With a unit `along`, the distance is
+// measured across it only, in the column of each point.
+//
 // F30: a point of a face nearly perpendicular to the reference face has its
 // height only to the world's rounding over the cosine, so where it stands in
 // the column of a point already kept (to the world's rounding, measured in
@@ -35,11 +30,11 @@ bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution) {
 // that the moved frame puts elsewhere (rigid-motion, --strict --seed 12: a
 // face 1e-6 off perpendicular, 2.3e-10 beside the incident face's corner
 // 2e5 L from the origin, 8e-6 L higher).
-bool holds_column(const ClipPolygon& points, const Vec3& p, const Vec3& normal, double world_resolution) {
-  const double same = tol::world_rounding(std::max(world_resolution, p.cwiseAbs().maxCoeff()));
+bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution, const Vec3& along = Vec3::Zero()) {
+  const double same = tol::world_rounding(std::max(resolution, p.cwiseAbs().maxCoeff()));
   for (int k = 0; k < points.size(); ++k) {
     const Vec3 apart = points[k] - p;
-    if ((apart - apart.dot(normal) * normal).norm() <= same) return true;
+    if ((apart - apart.dot(along) * along).norm() <= same) return true;
   }
   return false;
 }
@@ -81,7 +76,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     if (!steps.clip_to_sides(reference, polygon, nullptr)) continue;
     remove_points_outside(polygon, reference_plane);
     for (int k = 0; k < polygon.size(); ++k) {
-      if (holds_column(clipped, polygon[k], reference.normal, world_resolution)) continue;
+      if (holds_point(clipped, polygon[k], world_resolution, reference.normal)) continue;
       added = clipped.push(polygon[k]) || added;
     }
   }

@@ -56,9 +56,12 @@ struct Solid {
       outside = std::max(outside, planes.normals[f].dot(p) - planes.offsets[f]);
       if (outside > slack) return false;
     }
-    return settles(outside, slack) || signed_distance(hull, pose, p - shift) <= slack;
+    return admits(p, outside, slack);
   }
-  static bool settles(double outside, double slack) { return outside <= -slack; }
+  // The same, for a point `outside` its farthest plane.
+  bool admits(const Vec3& p, double outside, double slack) const {
+    return outside <= -slack || (outside <= slack && signed_distance(hull, pose, p - shift) <= slack);
+  }
 };
 
 // The corners of the intersection of two convex hulls lie among: each hull's
@@ -78,7 +81,7 @@ void add_corners(const Hull& hull, const std::vector<Vec3>& world, const Vec3& s
       height[f] = other.planes.normals[f].dot(p) - other.planes.offsets[f];
       outside = std::max(outside, height[f]);
     }
-    if (Solid::settles(outside, slack) || (outside <= slack && other.holds(p, slack))) out.push_back(p);
+    if (other.admits(p, outside, slack)) out.push_back(p);
   }
   for (const HullEdge& e : hull.edges()) {
     const Vec3 p = world[e.v0] + shift, q = world[e.v1] + shift;
