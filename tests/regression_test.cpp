@@ -67,7 +67,7 @@ TEST(RegressionCorpus, HoldsTheFindings) { EXPECT_GE(regression_cases().size(), 
 // corpus/open: findings in the built-in not fixed yet (FINDINGS.md, "Open").
 // Each still fails as its `expect-builtin` line says; when a fix makes one
 // pass, this test fails until the case moves to corpus/regressions with an
-// `expect-tutorial` line.
+// `expect-tutorial` line. The folder may hold none (F31 fixed the last).
 std::vector<std::string> open_cases() {
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::directory_iterator(test::corpus_path("open")))
@@ -77,7 +77,6 @@ std::vector<std::string> open_cases() {
 }
 
 TEST(OpenFindings, TheBuiltinStillFailsEachAsRecorded) {
-  ASSERT_FALSE(open_cases().empty());
   std::string error;
   const auto builtin = open_session("builtin", 5, error);
   for (const std::string& file : open_cases()) {

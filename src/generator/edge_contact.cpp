@@ -26,10 +26,21 @@ constexpr int kMaxSupportingEdges = 32;
 // perpendicular to it, and several can be (F6: a frustum's polygon edges);
 // nor is a test for perpendicular edges right, which a nearly parallel twin
 // 1e-9 rad off fails depending on which of the two made the axis (F12).
+// The rounding is that of the coordinates the heights are computed from, not
+// of the heights: a needle across n has heights of 1e-3 and vertices 116
+// away, and the edge SAT's axis came from, 2.7e-15 below an edge 3.6e-12
+// long at the tip, was left out (a slack of 4.9e-16); no pair crossed, and
+// the driver clipped a sliver face 15 degrees off n (F31, open as O3 since
+// the first campaigns).
 // Returns how many were written to `edges`.
 int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edges) {
   double best = -std::numeric_limits<double>::infinity(), lowest = std::numeric_limits<double>::infinity();
-  for (int i = 0; i < hull.vertex_count(); ++i) lowest = std::min(lowest, direction.dot(hull.world_vertex(i)));
+  double extent = 0;
+  for (int i = 0; i < hull.vertex_count(); ++i) {
+    const Vec3 p = hull.world_vertex(i);
+    lowest = std::min(lowest, direction.dot(p));
+    extent = std::max(extent, p.cwiseAbs().maxCoeff());
+  }
   const auto each_edge = [&](auto&& visit) {
     for (int f = 0; f < hull.face_count(); ++f) {
       const int n = hull.face_size(f);
@@ -44,7 +55,7 @@ int supporting_edges(const PosedHull& hull, const Vec3& direction, Segment* edge
   each_edge([&](int, int, int f, int k, double reach) {
     if (reach > best && !hull.is_flat_step(f, k)) best = reach;
   });
-  const double slack = tol::kTie * (best - lowest) + tol::world_rounding(std::abs(best));
+  const double slack = tol::kTie * (best - lowest) + tol::world_rounding(std::max(std::abs(best), extent));
   int count = 0;
   each_edge([&](int v0, int v1, int f, int k, double reach) {
     if (count < kMaxSupportingEdges && reach >= best - slack && !hull.is_flat_step(f, k))
