@@ -192,6 +192,24 @@ TEST(ContactRegion, AKnifeEdgedSheetDoesNotReachPastItsEdge) {
   EXPECT_LT(region.width, 0.1);
 }
 
+// A sheet 5e-4 thick, 0.3 deep under a top folded by 1.4e-3 rad, lies
+// wholly within the first-touching slab: the region is bounded by the sheet
+// alone, with no corner on either half of the fold, and still lies against
+// both (h12).
+TEST(ContactRegion, ASheetWithinTheFirstTouchingSlabLiesAgainstBothHalvesOfAFold) {
+  const std::string file = "regressions/h12-a-sheet-within-the-first-touching-slab-under-a-folded-top.case";
+  const CaseParse parsed = read_case_file(test::corpus_path(file));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = scene_of(*parsed.value);
+  const RankedAxis best = rank_sat_axes(s).front();
+  const double slack = s.length_tolerance(tol::kRegionSlack);
+  const Vec3 first_touch = tol::kRegionFirstTouch * best.overlap * best.normal;
+  const ContactRegion region = contact_region(s, best.normal, first_touch, slack);
+  ASSERT_FALSE(region.empty);
+  EXPECT_EQ(region.facing_faces_b, 2);
+  EXPECT_EQ(region.facing_faces_a, 1);
+}
+
 TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {
   const LibccdAnswer answer = ask_libccd(box_on_slab(), /*with_mpr=*/true);
   EXPECT_TRUE(answer.gjk_intersecting);

@@ -137,17 +137,57 @@ Vec2 area_centroid(const std::vector<Vec2>& poly) {
   return o + sum / area;
 }
 
-// The faces (planes) facing along `d`, within kFoldAngle, that some corner
-// lies on: a corner inside a convex hull and on a face's plane is on that face.
-int facing_faces(const Planes& planes, const std::vector<Vec3>& corners, const Vec3& d, double slack) {
+// Convex polygons p and q (at least three corners each) overlap by more
+// than `margin` across every edge of either: they share an area, not only
+// an edge where two faces meet.
+bool overlap_2d(const std::vector<Vec2>& p, const std::vector<Vec2>& q, double margin) {
+  const auto separated_by_an_edge_of = [&](const std::vector<Vec2>& edges) {
+    for (size_t i = 0; i < edges.size(); ++i) {
+      const Vec2 along = edges[(i + 1) % edges.size()] - edges[i];
+      const Vec2 across(-along.y(), along.x());
+      const double length = across.norm();
+      if (!(length > 0)) continue;
+      double p_low = INFINITY, p_high = -INFINITY, q_low = INFINITY, q_high = -INFINITY;
+      for (const Vec2& c : p) p_low = std::min(p_low, across.dot(c)), p_high = std::max(p_high, across.dot(c));
+      for (const Vec2& c : q) q_low = std::min(q_low, across.dot(c)), q_high = std::max(q_high, across.dot(c));
+      if (std::min(p_high - q_low, q_high - p_low) <= margin * length) return true;
+    }
+    return false;
+  };
+  return p.size() >= 3 && q.size() >= 3 && !separated_by_an_edge_of(p) && !separated_by_an_edge_of(q);
+}
+
+// The faces facing along `d`, within kFoldAngle, that the region lies
+// against: some corner lies on the face's plane (a corner inside a convex
+// hull and on a face's plane is on that face), or the region's projection
+// shares an area with the face's. The second is for a region bounded by
+// the other hull alone: a sheet 5e-4 thick lying wholly within the
+// first-touching slab, 0.3 deep under a top folded by 1.4e-3 rad, has no
+// corner on either half of the fold, and the built-in's contacts under one
+// half were held to the whole sheet (h12, manifuzz check --seed 2026112502).
+int facing_faces(const Hull& hull, const std::vector<Vec3>& world, const Vec3& shift, const Planes& planes,
+                 const std::vector<Vec3>& corners, const std::vector<Vec2>& region, const Vec3& d, const Vec3& u,
+                 const Vec3& v, double slack) {
   int count = 0;
+  std::vector<Vec2> face;
   for (size_t f = 0; f < planes.normals.size(); ++f) {
     if (planes.normals[f].dot(d) < std::cos(tol::kFoldAngle)) continue;
+    bool against = false;
     for (const Vec3& c : corners)
       if (std::abs(planes.normals[f].dot(c) - planes.offsets[f]) <= slack) {
-        ++count;
+        against = true;
         break;
       }
+    if (!against) {
+      face.clear();
+      const int loop = static_cast<int>(f);
+      for (int k = 0; k < hull.face_size(loop); ++k) {
+        const Vec3 p = world[static_cast<size_t>(hull.face_vertex(loop, k))] + shift;
+        face.emplace_back(u.dot(p), v.dot(p));
+      }
+      against = overlap_2d(region, face, slack);
+    }
+    count += against ? 1 : 0;
   }
   return count;
 }
@@ -192,13 +232,15 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
   add_corners(s.hull_b, s.world_b, shift_b, planes_b, solid_a, slack, corners);
   ContactRegion region;
   if (corners.empty()) return region;
-  region.facing_faces_a = facing_faces(planes_a, corners, n, slack);
-  region.facing_faces_b = facing_faces(planes_b, corners, -n, slack);
   Vec3 u, v;
   plane_basis(n, u, v);
   std::vector<Vec2> projected;
   for (const Vec3& c : corners) projected.emplace_back(u.dot(c), v.dot(c));
   region.corners = monotone_chain(projected);
+  region.facing_faces_a = facing_faces(s.hull_a, s.world_a, Vec3::Zero(), planes_a, corners, region.corners, n, u, v,
+                                       slack);
+  region.facing_faces_b = facing_faces(s.hull_b, s.world_b, shift_b, planes_b, corners, region.corners, -n, u, v,
+                                       slack);
   region.empty = false;
   region.centroid = area_centroid(region.corners);
   for (size_t i = 0; i < region.corners.size(); ++i)
