@@ -72,6 +72,39 @@ TEST(SutherlandHodgman, ABandStillCutsAnEdgeThatReallyCrosses) {
   for (int k = 0; k < out.size(); ++k) EXPECT_LE(out[k].x(), 0.5);
 }
 
+// F32: the square's right edge leans 1e-6 rad off the plane x = 1, its lower
+// end 1.5e-12 outside (a world's rounding the frame's band does not cover),
+// its upper end inside. Interpolating puts the crossing 1.5e-6 up the edge;
+// within the wider band the lower end crosses at its foot.
+ClipPolygon square_with_right_edge_leaning_past_the_plane() {
+  ClipPolygon square;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1 + 1.5e-12, 0, 0), Vec3(1 + 1.5e-12 - 1e-6, 1, 0), Vec3(0, 1, 0)})
+    square.push(p);
+  return square;
+}
+
+TEST(SutherlandHodgman, AnOutsideEndWithinTheWiderBandCrossesAtItsFoot) {
+  ClipPolygon interpolated, at_foot;
+  clip_to_plane(square_with_right_edge_leaning_past_the_plane(), Plane{Vec3(1, 0, 0), 1.0}, interpolated, 1e-15);
+  clip_to_plane(square_with_right_edge_leaning_past_the_plane(), Plane{Vec3(1, 0, 0), 1.0}, at_foot, 1e-15, 1e-10);
+  ASSERT_EQ(interpolated.size(), 5);
+  ASSERT_EQ(at_foot.size(), 5);
+  double highest_crossing = 0, foot_height = 1;
+  for (int k = 0; k < interpolated.size(); ++k)
+    if (interpolated[k].y() > 0 && interpolated[k].y() < 1) highest_crossing = interpolated[k].y();
+  for (int k = 0; k < at_foot.size(); ++k)
+    if (at_foot[k].x() == 1.0) foot_height = at_foot[k].y();
+  EXPECT_GT(highest_crossing, 1e-6);
+  EXPECT_EQ(foot_height, 0);
+}
+
+TEST(SutherlandHodgman, AnOutsideEndPastTheWiderBandIsStillInterpolated) {
+  ClipPolygon out;
+  clip_to_plane(unit_square(), Plane{Vec3(1, 0, 0), 0.5}, out, 1e-15, 1e-10);
+  ASSERT_EQ(out.size(), 4);
+  for (int k = 0; k < out.size(); ++k) EXPECT_LE(out[k].x(), 0.5);
+}
+
 TEST(PointRemoval, DropsPointsOutsideWithoutAddingCrossings) {
   ClipPolygon square = unit_square();
   remove_points_outside(square, Plane{Vec3(1, 0, 0), 0.5});

@@ -52,9 +52,12 @@ class ClipPolygon {
 /// One Sutherland-Hodgman pass: keeps the part of `in` inside `plane`, adding
 /// the crossing point of every edge that crosses it. `out` must not alias
 /// `in`. A point within `on_plane` of the plane is on it: inside, and its own
-/// crossing point (0: only a point exactly on the plane). Returns false if
-/// `out` overflowed (cannot happen when in.size() < capacity).
-bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0);
+/// crossing point (0: only a point exactly on the plane). An outside point
+/// within `near_plane` of it (a larger band, at least `on_plane`) crosses at
+/// its foot on the plane. Returns false if `out` overflowed (cannot happen
+/// when in.size() < capacity).
+bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
+                   double near_plane = 0);
 
 /// The tutorial's last step: drops the points outside `plane` without adding
 /// crossing points (it wants contact points, not the clipped polygon).

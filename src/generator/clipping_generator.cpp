@@ -1,5 +1,6 @@
 #include "generator/clipping_generator.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -100,6 +101,14 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
   // F23: an incident edge that lies in a side plane is on it, not across it
   // by a rounding error at each end.
   const double on_plane = tol::world_rounding(std::max(largest_coordinate(loop), largest_coordinate(incident)));
+  // F32: B's corners carry the rounding of the world's positions into the
+  // frame, so a corner that far outside a side plane may be inside it in
+  // another frame: its edge crosses at the corner's foot on the plane, not
+  // where the edge, 6e-7 rad off the plane, met it 2.4e-6 along (a corner
+  // 1.5e-12 out, 1.8e4 L from the origin; rigid-motion, manifuzz check
+  // --seed 2026112502). Widening F23's band instead kept such corners
+  // unclipped, up to 2e-6 outside a needle's tip 1e4 L out (h7's case).
+  const double world_band = std::max(on_plane, tol::world_rounding(reference.world_resolution));
   ClipPolygon scratch;
   for (int k = 0; k < n; ++k) {
     const Vec3& from = loop[k];
@@ -111,7 +120,7 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
     const double length = outward.norm();
     if (!(length > 0)) continue;
     const Plane side{outward / length, outward.dot(from) / length};
-    if (!clip_to_plane(incident, side, scratch, on_plane)) return false;
+    if (!clip_to_plane(incident, side, scratch, on_plane, world_band)) return false;
     incident.take(scratch);
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
@@ -241,6 +250,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   const bool flipped = steps.reference_is_b(sat, face_a, face_b);
   if (trace) trace->flipped = flipped;
   ClipFace& reference = flipped ? face_b : face_a;
+  reference.world_resolution = world_resolution;
   const ClipFace& incident = flipped ? face_a : face_b;
   ClipPolygon reference_polygon, polygon, clipped;
   steps.face_polygon(*reference.hull, reference.index, reference_polygon);

@@ -35,6 +35,9 @@ struct ClipFace {
   int index = -1;
   Vec3 normal;  ///< world, outward
   const ClipPolygon* polygon = nullptr;  ///< world loop, counter-clockwise about normal
+  /// The largest coordinate of the world the frame's positions were rounded
+  /// in (the poses' positions; the frame itself is centred on A, F21).
+  double world_resolution = 0;
 };
 
 /// The generator's steps, each replaceable: the project's deliberately broken
