@@ -30,9 +30,11 @@ constexpr int kMaxTiedFaces = 64;
 // the reference plane) it adds nothing to the region's span, only a depth
 // that the moved frame puts elsewhere (rigid-motion, --strict --seed 12: a
 // face 1e-6 off perpendicular, 2.3e-10 beside the incident face's corner
-// 2e5 L from the origin, 8e-6 L higher).
-bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution, const Vec3& along = Vec3::Zero()) {
-  const double same = tol::world_rounding(std::max(resolution, p.cwiseAbs().maxCoeff()));
+// 2e5 L from the origin, 8e-6 L higher). `at_least` is a floor under that
+// rounding.
+bool holds_point(const ClipPolygon& points, const Vec3& p, double resolution, const Vec3& along = Vec3::Zero(),
+                 double at_least = 0) {
+  const double same = std::max(at_least, tol::world_rounding(std::max(resolution, p.cwiseAbs().maxCoeff())));
   for (int k = 0; k < points.size(); ++k) {
     const Vec3 apart = points[k] - p;
     if ((apart - apart.dot(along) * along).norm() <= same) return true;
@@ -64,6 +66,16 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
                                const ClipFace& reference, const Plane& reference_plane, const ClippingSteps& steps,
                                double world_resolution, ClipPolygon& clipped) {
   bool added = false;
+  // F33: the world's rounding alone made the column a frame's choice. A face
+  // 1.1e-6 rad off perpendicular stood 2.3e-10 beside a kept point, 2.1e-4
+  // higher: within the rounding 1e4 L out, beyond it at the origin, and
+  // far-from-origin dropped the point the original kept (--strict --seed
+  // 2026112503). Within 1e-9 of the reference face's size it adds nothing
+  // to the region's span in any frame.
+  Vec3 low = (*reference.polygon)[0], high = low;
+  for (int k = 1; k < reference.polygon->size(); ++k)
+    low = low.cwiseMin((*reference.polygon)[k]), high = high.cwiseMax((*reference.polygon)[k]);
+  const double column = tol::kTie * (high - low).norm();
   ClipPolygon polygon;
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
@@ -77,7 +89,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     if (!steps.clip_to_sides(reference, polygon, nullptr)) continue;
     remove_points_outside(polygon, reference_plane);
     for (int k = 0; k < polygon.size(); ++k) {
-      if (holds_point(clipped, polygon[k], world_resolution, reference.normal)) continue;
+      if (holds_point(clipped, polygon[k], world_resolution, reference.normal, column)) continue;
       added = clipped.push(polygon[k]) || added;
     }
   }
