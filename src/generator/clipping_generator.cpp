@@ -70,12 +70,14 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   // 1.1e-6 rad off perpendicular stood 2.3e-10 beside a kept point, 2.1e-4
   // higher: within the rounding 1e4 L out, beyond it at the origin, and
   // far-from-origin dropped the point the original kept (--strict --seed
-  // 2026112503). Within 1e-9 of the reference face's size it adds nothing
-  // to the region's span in any frame.
-  Vec3 low = (*reference.polygon)[0], high = low;
-  for (int k = 1; k < reference.polygon->size(); ++k)
-    low = low.cwiseMin((*reference.polygon)[k]), high = high.cwiseMax((*reference.polygon)[k]);
-  const double column = tol::kTie * (high - low).norm();
+  // 2026112503). Within 1e-9 of the reference face's perimeter it adds
+  // nothing to the region's span, and the perimeter is the same in every
+  // frame (a bounding box's diagonal is not: turned, it moved the column
+  // past a point 1.4e-9 beside a cylinder's, rigid-motion, the same seed).
+  const ClipPolygon& loop = *reference.polygon;
+  double perimeter = 0;
+  for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  const double column = tol::kTie * perimeter;
   ClipPolygon polygon;
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
