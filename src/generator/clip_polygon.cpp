@@ -21,15 +21,18 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
     // kept anyway. Interpolating would divide rounding by rounding when the
     // edge lies in the plane, and put the crossing anywhere along it (F23).
     if (start_inside != end_inside && std::min(d_start, d_end) <= 0) {
-      // An outside end near the plane crosses at its foot: interpolating
+      // An outside end within `near_plane` crosses at its foot: interpolating
       // along an edge nearly in the plane moves the crossing by the end's
-      // rounding over the edge's slope.
+      // rounding over the edge's slope (F32: a corner 1.5e-12 out, its edge
+      // 6e-7 rad off the plane, crossed 2.4e-6 along).
       const Vec3& outside = start_inside ? end : start;
       const double d_outside = start_inside ? d_end : d_start;
       // The signs differ strictly (one <= 0, the other > 0), so the
       // denominator is never zero and t lies in [0, 1].
       const double t = d_start / (d_start - d_end);
-      ok &= out.push(d_outside <= near_plane ? Vec3(outside - d_outside * plane.normal) : Vec3(start + t * (end - start)));
+      const Vec3 crossing =
+          d_outside <= near_plane ? Vec3(outside - d_outside * plane.normal) : Vec3(start + t * (end - start));
+      ok &= out.push(crossing);
     }
     if (end_inside) ok &= out.push(end);
     start = end;
