@@ -105,16 +105,11 @@ void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
   for (int k = 0; k < hull.face_size(face); ++k) out.push(hull.world_face_point(face, k));
 }
 
-// F1: the clipping method's contact region is the prism over the reference
-// face. The adjacent faces' planes only bound it where those faces stand
-// perpendicular; where they slope inwards the region reaches past the face and
-// point_on_a leaves the hull.
-bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
-  const ClipPolygon& loop = *reference.polygon;
-  const int n = loop.size();
+SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   // F23: an incident edge that lies in a side plane is on it, not across it
   // by a rounding error at each end.
-  const double on_plane = tol::world_rounding(std::max(largest_coordinate(loop), largest_coordinate(incident)));
+  const double on_plane =
+      tol::world_rounding(std::max(largest_coordinate(*reference.polygon), largest_coordinate(incident)));
   // F32: B's corners carry the rounding of the world's positions into the
   // frame, so a corner that far outside a side plane may be inside it in
   // another frame: its edge crosses at the corner's foot on the plane, not
@@ -122,26 +117,40 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
   // 1.5e-12 out, 1.8e4 L from the origin; rigid-motion, manifuzz check
   // --seed 2026112502). Widening F23's band instead kept such corners
   // unclipped, up to 2e-6 outside a needle's tip 1e4 L out (h7's case).
-  const double world_band = std::max(on_plane, tol::world_rounding(reference.world_resolution));
+  return {on_plane, std::max(on_plane, tol::world_rounding(reference.world_resolution))};
+}
+
+bool reference_side(const ClipFace& reference, int k, Plane& side) {
+  const ClipPolygon& loop = *reference.polygon;
+  const Vec3& from = loop[k];
+  const Vec3& to = loop[(k + 1) % loop.size()];
+  // The loop runs counter-clockwise about the outward normal, so edge x
+  // normal points out of the face, in its plane. Its length is the edge's
+  // (never zero on a validated hull); normalising keeps distances in lengths.
+  const Vec3 outward = (to - from).cross(reference.normal);
+  const double length = outward.norm();
+  if (!(length > 0)) return false;
+  side = Plane{outward / length, outward.dot(from) / length};
+  return true;
+}
+
+// F1: the clipping method's contact region is the prism over the reference
+// face. The adjacent faces' planes only bound it where those faces stand
+// perpendicular; where they slope inwards the region reaches past the face and
+// point_on_a leaves the hull.
+bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+  const SideBands bands = side_bands(reference, incident);
   ClipPolygon scratch;
-  for (int k = 0; k < n; ++k) {
-    const Vec3& from = loop[k];
-    const Vec3& to = loop[(k + 1) % n];
-    // The loop runs counter-clockwise about the outward normal, so edge x
-    // normal points out of the face, in its plane. Its length is the edge's
-    // (never zero on a validated hull); normalising keeps distances in lengths.
-    const Vec3 outward = (to - from).cross(reference.normal);
-    const double length = outward.norm();
-    if (!(length > 0)) continue;
-    const Plane side{outward / length, outward.dot(from) / length};
-    if (!clip_to_plane(incident, side, scratch, on_plane, world_band)) return false;
+  for (int k = 0; k < reference.polygon->size(); ++k) {
+    Plane side;
+    if (!reference_side(reference, k, side)) continue;
+    if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane)) return false;
     incident.take(scratch);
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
   }
   return true;
 }
-
 
 // The tutorial's last loop: each clipped point is on the incident face; its depth
 // is measured from the closest point of the reference polygon, along n.

@@ -28,6 +28,7 @@ struct ClipTrace {
 };
 
 class ClipPolygon;
+struct Plane;
 
 /// A significant face in world space, and the polygon that stands for it.
 struct ClipFace {
@@ -81,6 +82,17 @@ bool single_point_contact(const ClipFace& face_a, int support_a, const ClipFace&
 bool more_parallel_is_reference_b(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
 /// F13: on a face axis, that face is the reference face; otherwise the tutorial's rule.
 bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const ClipFace& face_b);
+/// The bands of the reference prism's sides for clip_to_plane: a point within
+/// `on_plane` of a side is on it (F23); an outside point within `near_plane`
+/// crosses it at its foot (F32, the world's rounding).
+struct SideBands {
+  double on_plane = 0, near_plane = 0;
+};
+SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
+/// The side of the reference prism through edge k of the reference loop:
+/// the plane through the edge perpendicular to the face, facing out. False
+/// for an edge of no length.
+bool reference_side(const ClipFace& reference, int k, Plane& side);
 /// Sutherland-Hodgman against the prism over the reference face: through each
 /// edge, the plane perpendicular to the face.
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);

@@ -4,18 +4,12 @@
 
 namespace {
 bool clip_sides_backwards(const mfz::ClipFace& reference, mfz::ClipPolygon& incident, mfz::ClipTrace*) {
-  const mfz::ClipPolygon& loop = *reference.polygon;
-  double largest = 0;
-  for (int k = 0; k < loop.size(); ++k) largest = std::max(largest, loop[k].cwiseAbs().maxCoeff());
-  for (int k = 0; k < incident.size(); ++k) largest = std::max(largest, incident[k].cwiseAbs().maxCoeff());
-  const double on_plane = mfz::tol::world_rounding(largest);
+  const mfz::SideBands bands = mfz::side_bands(reference, incident);
   mfz::ClipPolygon scratch;
-  for (int k = loop.size(); k-- > 0;) {
-    const mfz::Vec3 outward = (loop[(k + 1) % loop.size()] - loop[k]).cross(reference.normal);
-    const double length = outward.norm();
-    if (!(length > 0)) continue;
-    const mfz::Plane side{outward / length, outward.dot(loop[k]) / length};
-    if (!mfz::clip_to_plane(incident, side, scratch, on_plane)) return false;
+  for (int k = reference.polygon->size(); k-- > 0;) {
+    mfz::Plane side;
+    if (!mfz::reference_side(reference, k, side)) continue;
+    if (!mfz::clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane)) return false;
     incident.take(scratch);
   }
   return true;
