@@ -2,6 +2,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <cmath>
+#include <optional>
+#include <string>
 
 #include "case/case_file.h"
 #include "oracles/brute_force_sat.h"
@@ -180,16 +182,24 @@ TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
 // corner's edges (rising 0.25 and 0.49 along n per unit) hold the region to
 // under 0.1; the planes' slack alone let a point of A's edge 4.9 past the
 // knife edge in, and the region reached 9.6 (h10, manifuzz fuzz).
-TEST(ContactRegion, AKnifeEdgedSheetDoesNotReachPastItsEdge) {
-  const CaseParse parsed = read_case_file(test::corpus_path("regressions/h10-a-knife-edged-sheet-at-the-origin.case"));
-  ASSERT_TRUE(parsed.value) << parsed.error;
+// The first-touching region of a corpus case along its least-overlap axis,
+// as spans-contact-region takes it; nullopt when the case does not read.
+std::optional<ContactRegion> first_touching_region(const std::string& file) {
+  const CaseParse parsed = read_case_file(test::corpus_path(file));
+  if (!parsed.value) {
+    ADD_FAILURE() << parsed.error;
+    return std::nullopt;
+  }
   const Scene s = scene_of(*parsed.value);
   const RankedAxis best = rank_sat_axes(s).front();
-  const double slack = s.length_tolerance(tol::kRegionSlack);
   const Vec3 first_touch = tol::kRegionFirstTouch * best.overlap * best.normal;
-  const ContactRegion region = contact_region(s, best.normal, first_touch, slack);
-  ASSERT_FALSE(region.empty);
-  EXPECT_LT(region.width, 0.1);
+  return contact_region(s, best.normal, first_touch, s.length_tolerance(tol::kRegionSlack));
+}
+
+TEST(ContactRegion, AKnifeEdgedSheetDoesNotReachPastItsEdge) {
+  const auto region = first_touching_region("regressions/h10-a-knife-edged-sheet-at-the-origin.case");
+  ASSERT_TRUE(region && !region->empty);
+  EXPECT_LT(region->width, 0.1);
 }
 
 // A sheet 5e-4 thick, 0.3 deep under a top folded by 1.4e-3 rad, lies
@@ -197,17 +207,11 @@ TEST(ContactRegion, AKnifeEdgedSheetDoesNotReachPastItsEdge) {
 // alone, with no corner on either half of the fold, and still lies against
 // both (h12).
 TEST(ContactRegion, ASheetWithinTheFirstTouchingSlabLiesAgainstBothHalvesOfAFold) {
-  const std::string file = "regressions/h12-a-sheet-within-the-first-touching-slab-under-a-folded-top.case";
-  const CaseParse parsed = read_case_file(test::corpus_path(file));
-  ASSERT_TRUE(parsed.value) << parsed.error;
-  const Scene s = scene_of(*parsed.value);
-  const RankedAxis best = rank_sat_axes(s).front();
-  const double slack = s.length_tolerance(tol::kRegionSlack);
-  const Vec3 first_touch = tol::kRegionFirstTouch * best.overlap * best.normal;
-  const ContactRegion region = contact_region(s, best.normal, first_touch, slack);
-  ASSERT_FALSE(region.empty);
-  EXPECT_EQ(region.facing_faces_b, 2);
-  EXPECT_EQ(region.facing_faces_a, 1);
+  const auto region =
+      first_touching_region("regressions/h12-a-sheet-within-the-first-touching-slab-under-a-folded-top.case");
+  ASSERT_TRUE(region && !region->empty);
+  EXPECT_EQ(region->facing_faces_b, 2);
+  EXPECT_EQ(region->facing_faces_a, 1);
 }
 
 TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {

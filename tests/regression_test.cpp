@@ -66,10 +66,10 @@ INSTANTIATE_TEST_SUITE_P(Corpus, RegressionCase, ::testing::ValuesIn(regression_
 
 TEST(RegressionCorpus, HoldsTheFindings) { EXPECT_GE(regression_cases().size(), 4u); }
 
-// corpus/open: findings in the built-in not fixed yet (FINDINGS.md, "Open").
-// Each still fails as its `expect-builtin` line says; when a fix makes one
-// pass, this test fails until the case moves to corpus/regressions with an
-// `expect-tutorial` line. The folder may hold none (F31 fixed the last).
+// corpus/open: findings not fixed yet (FINDINGS.md, "Open"). Each still
+// fails as its `expect-builtin` line says; when a fix makes one pass, this
+// test fails until the case moves to corpus/regressions with an
+// `expect-tutorial` line. The folder may hold none (F31 left it so).
 std::vector<std::string> open_cases() {
   std::vector<std::string> files;
   for (const auto& entry : std::filesystem::directory_iterator(test::corpus_path("open")))
@@ -81,7 +81,7 @@ std::vector<std::string> open_cases() {
 // A harness finding still open names the correct variant it fires on
 // (`expect-variant <variant> <check>`, a plugin of tests/mutants): the
 // harness must still flag it as recorded until the check is fixed.
-TEST(OpenFindings, TheBuiltinStillFailsEachAsRecorded) {
+TEST(OpenFindings, EachStillFailsAsRecorded) {
   std::string error;
   const auto builtin = open_session("builtin", 5, error);
   for (const std::string& file : open_cases()) {
