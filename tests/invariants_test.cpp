@@ -232,6 +232,82 @@ TEST(InvariantTolerance, TheSharpCornerTermIsCapped) {
   EXPECT_DOUBLE_EQ(s.point_tolerance(), s.length_tolerance(tol::kPoint) + tol::kSharpCornerCap * s.scale);
 }
 
+// An octagonal prism tilted 0.03 rad rests 0.05 deep on a slab, deepest
+// along the edge between its corners at -22.5 and 22.5 degrees: the
+// first-touching region is a strip along that edge, the whole intersection
+// about the octagon's middle. The eight contacts are the octagon's corners.
+class ReducedManifold : public ::testing::Test {
+ protected:
+  ReducedManifold() : run_(test::run_builtin(tilted_octagon_on_slab())) {}
+
+  static CaseFile tilted_octagon_on_slab() {
+    std::vector<Vec3> prism;
+    const double pi = std::acos(-1.0), r = 0.5, h = 0.25, tilt = 0.03;
+    for (int k = 0; k < 8; ++k)
+      for (double z : {-h, h})
+        prism.emplace_back(r * std::cos(pi * (k - 0.5) / 4), r * std::sin(pi * (k - 0.5) / 4), z);
+    const double centre = 0.45 + r * std::cos(pi / 8) * std::sin(tilt) + h * std::cos(tilt);
+    return test::make_case(box_points(2, 2, 0.5), {}, prism,
+                           {Vec3(0, 0, centre), Quat(Eigen::AngleAxisd(tilt, Vec3::UnitY()))});
+  }
+
+  // The manifold keeping only the contacts under the octagon's corners `kept`.
+  mfz_manifold keeping(std::initializer_list<int> kept) const {
+    mfz_manifold m = run_.manifold;
+    int count = 0;
+    for (int corner : kept)
+      for (int i = 0; i < run_.manifold.contact_count; ++i) {
+        const Vec3 p = to_vec(run_.manifold.contacts[i].point_on_a);
+        const double pi = std::acos(-1.0), angle = std::atan2(p.y(), p.x());
+        if (std::abs(std::remainder(angle - pi * (corner - 0.5) / 4, 2 * pi)) < 0.05)
+          m.contacts[count++] = run_.manifold.contacts[i];
+      }
+    EXPECT_EQ(count, static_cast<int>(kept.size()));
+    m.contact_count = count;
+    return m;
+  }
+
+  CheckStatus spans(const mfz_manifold& m, int max_contacts) const {
+    Profile profile;
+    profile.max_contacts = max_contacts;
+    for (const InvariantCheck& c : check_manifold(run_.scene, run_.oracles, 0, m, profile).checks)
+      if (c.name == "spans-contact-region") return c.status;
+    return CheckStatus::skipped;
+  }
+
+  CaseRun run_;
+};
+
+TEST_F(ReducedManifold, TheFullManifoldSpansTheFirstTouchingStrip) {
+  ASSERT_EQ(run_.manifold.contact_count, 8);
+  EXPECT_EQ(spans(run_.manifold, 0), CheckStatus::pass);
+}
+
+// A reducer keeps four corners of the overlap, and the square of largest
+// area leaves out one end of the deepest edge: it misses the strip's
+// centroid and encloses the whole intersection's, the contract's region.
+// Held to a full manifold it fails; declaring max-contacts=4 it passes (h13:
+// a correct reducer flagged within minutes).
+TEST_F(ReducedManifold, FourCornersOfLargestAreaPassAtTheDeclaredMaxContacts) {
+  const mfz_manifold square = keeping({1, 3, 5, 7});
+  EXPECT_EQ(spans(square, 0), CheckStatus::fail);
+  EXPECT_EQ(spans(square, 4), CheckStatus::pass);
+}
+
+// Four corners side by side, as `count = min(count, 4)` keeps them, miss
+// both centroids, on the shallow side or beside the deepest edge: the
+// declared max-contacts excuses which four, not where they lie.
+TEST_F(ReducedManifold, FourCornersOnOneSideFailEvenAtTheDeclaredMaxContacts) {
+  EXPECT_EQ(spans(keeping({3, 4, 5, 6}), 4), CheckStatus::fail);
+  EXPECT_EQ(spans(keeping({1, 2, 3, 4}), 4), CheckStatus::fail);
+}
+
+// Fewer contacts than declared is no reduction: the manifold is held to the
+// first-touching strip.
+TEST_F(ReducedManifold, FewerContactsThanDeclaredAreHeldToTheFirstTouchingStrip) {
+  EXPECT_EQ(spans(keeping({1, 3, 5, 7}), 8), CheckStatus::fail);
+}
+
 TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {
   for (int colliding : {0, 1}) {
     const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
