@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "case/case_file.h"
+#include "case/scene.h"
 #include "test_support.h"
 
 namespace mfz {
@@ -164,6 +166,37 @@ TEST(ClippingGenerator, ContactsAreCappedAtTheAbiCapacity) {
   const CaseRun run = run_builtin(make_case(prism, {}, prism, {Vec3(0, 0, 0.9), about(Vec3::UnitZ(), M_PI / 100)}));
   EXPECT_EQ(run.manifold.contact_count, MFZ_MAX_CONTACTS);
   expect_all_invariants_hold(run);
+}
+
+// A needle 1.3e-8 thin and 16000 long has 45 edges within the world's
+// rounding of its reach along an edge axis, 13 of them crossing B's edge.
+// Every one is tried, so the hull's numbering does not choose the contacts:
+// capped at the first 32, the needle numbered backwards kept none of the 13,
+// and a clipped face put a contact 6.7 off A (F34, vertex-order).
+TEST(ClippingGenerator, EverySupportingEdgeIsTriedWhateverTheHullsNumbering) {
+  const CaseParse parsed = read_case_file(
+      test::corpus_path("regressions/f34-a-needle-1e-8-thin-across-an-edge-off-surface-after-renumbering.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = *make_scene(*parsed.value).scene;
+  const auto manifold = [&](const Hull& a, const Hull& b) {
+    mfz_manifold m{};
+    EXPECT_EQ(generate_clipping_manifold(a.view(), s.abi_pose_a(), b.view(), s.abi_pose_b(), m), 0);
+    return m;
+  };
+  const mfz_manifold as_given = manifold(s.hull_a, s.hull_b);
+  const mfz_manifold renumbered = manifold(s.hull_a.renumbered(), s.hull_b.renumbered());
+  EXPECT_EQ(as_given.contact_count, 13);
+  ASSERT_EQ(renumbered.contact_count, as_given.contact_count);
+  // The same crossings, reached from the edges' other ends: equal to the
+  // rounding of coordinates 4466 from the origin.
+  const double rounding = 1e-9 * s.scale;
+  for (int i = 0; i < as_given.contact_count; ++i) {
+    const Vec3 p = to_vec(as_given.contacts[i].point_on_a);
+    double nearest = INFINITY;
+    for (int j = 0; j < renumbered.contact_count; ++j)
+      nearest = std::min(nearest, (to_vec(renumbered.contacts[j].point_on_a) - p).norm());
+    EXPECT_LE(nearest, rounding) << "contact " << i;
+  }
 }
 
 }  // namespace
