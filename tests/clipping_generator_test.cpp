@@ -199,5 +199,27 @@ TEST(ClippingGenerator, EverySupportingEdgeIsTriedWhateverTheHullsNumbering) {
   }
 }
 
+// A thin wedge 5e15 from the origin: the far end of its 2000-long edge
+// stands 63 beside the column of the corner kept at its near end, within the
+// world's rounding of the poses (about 72) that F30's column allows. The
+// world turned about a skew axis has the same rounding, so the turned run
+// drops that end too; measured on the largest coordinate, which the turn
+// made smaller, it kept it, 2000 from every contact (F35, rigid-motion).
+TEST(ClippingGenerator, AKeptPointsColumnIsAsWideInATurnedWorld) {
+  const CaseParse parsed = read_case_file(
+      test::corpus_path("regressions/f35-a-thin-wedge-5e15-out-gains-a-contact-2000-away-when-moved.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = *make_scene(*parsed.value).scene;
+  const Quat turn(Eigen::AngleAxisd(0.9, Vec3(1, 2, 3).normalized()));
+  const auto turned = [&](const Pose& p) { return Pose{turn * p.position, (turn * p.orientation).normalized()}; };
+  mfz_manifold as_given{}, in_turned_world{};
+  ASSERT_EQ(generate_clipping_manifold(s.hull_a.view(), s.abi_pose_a(), s.hull_b.view(), s.abi_pose_b(), as_given), 0);
+  ASSERT_EQ(generate_clipping_manifold(s.hull_a.view(), turned(s.pose_a).to_abi(), s.hull_b.view(),
+                                       turned(s.pose_b).to_abi(), in_turned_world),
+            0);
+  EXPECT_EQ(as_given.contact_count, 3);
+  EXPECT_EQ(in_turned_world.contact_count, as_given.contact_count);
+}
+
 }  // namespace
 }  // namespace mfz

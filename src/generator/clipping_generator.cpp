@@ -344,9 +344,12 @@ int32_t generate_clipping_manifold(const mfz_hull& hull_a, const mfz_pose& abi_p
   const Vec3 origin = pose_a.position;
   const Pose local_a{Vec3::Zero(), pose_a.orientation}, local_b{pose_b.position - origin, pose_b.orientation};
   // The frame's coordinates are small; the world's rounding is what its
-  // positions carry in (F30).
-  const double world_resolution =
-      std::max(pose_a.position.cwiseAbs().maxCoeff(), pose_b.position.cwiseAbs().maxCoeff());
+  // positions carry in (F30). It is taken of their lengths, which a turn of
+  // the world keeps, not of their largest coordinates, which it changes: a
+  // thin wedge's corner stood 63 beside a kept corner's column, 5e15 from
+  // the origin, inside the column's rounding of 72 and outside the turned
+  // world's, which kept it 2000 higher (F35, rigid-motion, open as O6).
+  const double world_resolution = std::max(pose_a.position.norm(), pose_b.position.norm());
   const int32_t status = generate_in_frame(hull_a, local_a, hull_b, local_b, world_resolution, out, trace, steps);
   shift_contacts(out, origin);
   if (trace)

@@ -36,8 +36,9 @@ struct ClipFace {
   int index = -1;
   Vec3 normal;  ///< world, outward
   const ClipPolygon* polygon = nullptr;  ///< world loop, counter-clockwise about normal
-  /// The largest coordinate of the world the frame's positions were rounded
-  /// in (the poses' positions; the frame itself is centred on A, F21).
+  /// The magnitude of the world the frame's positions were rounded in: the
+  /// longer pose position (the frame itself is centred on A, F21; a length,
+  /// which a turn of the world keeps, F35).
   double world_resolution = 0;
 };
 
