@@ -155,6 +155,11 @@ Hull Hull::renumbered() const {
   Shape& shape = *out.shape_;
   shape.vertices.assign(shape_->vertices.rbegin(), shape_->vertices.rend());
   shape.face_normals.assign(shape_->face_normals.rbegin(), shape_->face_normals.rend());
+  // Sized once: the vertex-order relation renumbers both hulls on every
+  // case, and growing four arrays step by step was 40 allocations a call.
+  shape.face_offsets.reserve(faces + 1);
+  shape.face_vertices.reserve(shape_->face_vertices.size());
+  shape.edges.reserve(edges().size());
   shape.face_offsets.push_back(0);
   for (int f = faces - 1; f >= 0; --f) {
     const int n = face_size(f);

@@ -481,6 +481,7 @@ Verdict run_rows(const Context& c, int32_t status, Wanted&& wanted) {
   Verdict v;
   v.generator_status = status;
   if (status != 0) return v;
+  v.checks.reserve(std::size(kInvariants));
   bool garbage = false;
   for (const InvariantRow& row : kInvariants) {
     if (!wanted(row)) continue;
