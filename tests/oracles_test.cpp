@@ -249,6 +249,19 @@ TEST(LibccdOracle, AnAnswerWithoutADirectionIsNoAnswer) {
   EXPECT_TRUE(!answer.mpr_ok || answer.mpr_direction.allFinite());
 }
 
+// Two boxes nearly concentric, turned alike to 1e-15, one corner of B moved
+// by 1e-5: libccd's EPA never met its tolerance and never returned, and
+// every command hung in the oracle (h14, manifuzz fuzz). With a budget of
+// support points it returns, and its answer counts as none.
+TEST(LibccdOracle, AnEpaThatWouldNeverEndIsCutOffAndGivesNoAnswer) {
+  const std::string file = "regressions/h14-libccd-s-epa-never-ends-on-two-nearly-concentric-boxes.case";
+  const CaseParse parsed = read_case_file(test::corpus_path(file));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const LibccdAnswer answer = ask_libccd(scene_of(*parsed.value), true);
+  EXPECT_TRUE(answer.gjk_intersecting);
+  EXPECT_FALSE(answer.epa_ok);
+}
+
 TEST(LibccdOracle, SeparatedHullsDoNotIntersect) {
   const Scene s = scene_of(test::make_case(box_points(0.5, 0.5, 0.5), {}, box_points(0.5, 0.5, 0.5),
                                            {Vec3(1.5, 0, 0), Quat::Identity()}));

@@ -12,6 +12,7 @@
 /// absolute world coordinate of the case. For cases near the origin M <= L and
 /// the second term is below 1e-13 L, so the tolerance is the contract's k * L.
 
+#include <cstddef>
 #include <limits>
 
 namespace mfz::tol {
@@ -75,6 +76,10 @@ inline constexpr double kCcdDistTolerance = 1e-10;
 /// Bound on libccd's iterations: its default is unbounded and GJK has been seen
 /// to spin forever on fuzz input (docs/contract.md).
 inline constexpr unsigned long kCcdMaxIterations = 500;
+/// Bound on the vertices libccd's EPA and MPR portal may add (one support
+/// point each): A - B has at most |A| |B| vertices, and past this many an
+/// answer is dropped rather than waited for (libccd_oracle.cpp, h14).
+inline constexpr size_t kCcdMaxPolytopeVertices = 2048;
 /// EPA's answers are only as good as its tolerance; comparisons against EPA
 /// use this (x L), two orders above kCcdEpaTolerance for its polytope error.
 inline constexpr double kEpa = 1e-6;
