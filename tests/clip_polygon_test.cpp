@@ -105,6 +105,21 @@ TEST(SutherlandHodgman, AnOutsideEndPastTheWiderBandIsStillInterpolated) {
   for (int k = 0; k < out.size(); ++k) EXPECT_LE(out[k].x(), 0.5);
 }
 
+// A sliver of the incident face at the end of the side's edge: a point on
+// the plane at the edge's end, and two 1e-9 outside, one beside the end and
+// one whose foot lies 0.5 past it. Past the edge's end a foot is no point of
+// the side: the outside end is interpolated towards its inside neighbour
+// instead, which is the end itself (F36: a contact 0.23 past the sharp
+// corner of a sliver 3.1e-7 rad wide, 2e9 from the origin).
+TEST(SutherlandHodgman, AFootPastTheEndOfTheSidesEdgeIsNoCrossing) {
+  ClipPolygon sliver, out;
+  for (const Vec3& p : {Vec3(1, 0, 0), Vec3(1 + 1e-9, 0, 0), Vec3(1 + 1e-9, -0.5, 0)}) sliver.push(p);
+  const SideEdge edge{Vec3(1, 0, 0), Vec3(1, 1, 0)};
+  ASSERT_TRUE(clip_to_plane(sliver, Plane{Vec3(1, 0, 0), 1.0}, out, 0, 1e-6, &edge));
+  ASSERT_GT(out.size(), 0);
+  for (int k = 0; k < out.size(); ++k) EXPECT_NEAR(out[k].y(), 0, 1e-9) << "point " << k;
+}
+
 TEST(PointRemoval, DropsPointsOutsideWithoutAddingCrossings) {
   ClipPolygon square = unit_square();
   remove_points_outside(square, Plane{Vec3(1, 0, 0), 0.5});

@@ -6,8 +6,23 @@
 #include "geometry/closest_point.h"
 
 namespace mfz {
+namespace {
 
-bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane, double near_plane) {
+// Whether `foot`, on the side plane, lies along the side's edge, between its
+// ends to within `slack`.
+bool along_edge(const Vec3& foot, const SideEdge* edge, double slack) {
+  if (!edge) return true;
+  const Vec3 run = edge->to - edge->from;
+  const double length = run.norm();
+  if (!(length > 0)) return false;
+  const double along = (foot - edge->from).dot(run) / length;
+  return along >= -slack && along <= length + slack;
+}
+
+}  // namespace
+
+bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane, double near_plane,
+                   const SideEdge* edge) {
   out.clear();
   if (in.empty()) return true;
   bool ok = true;
@@ -24,14 +39,18 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
       // An outside end within `near_plane` crosses at its foot: interpolating
       // along an edge nearly in the plane moves the crossing by the end's
       // rounding over the edge's slope (F32: a corner 1.5e-12 out, its edge
-      // 6e-7 rad off the plane, crossed 2.4e-6 along).
+      // 6e-7 rad off the plane, crossed 2.4e-6 along). Only where the foot
+      // lies along the side's edge: past its end, by the sharp corner of a
+      // sliver 3.1e-7 rad wide, each of the two sides took a point 6e-8 out
+      // for one on it, and a contact stood 0.23 beyond the corner (F36).
       const Vec3& outside = start_inside ? end : start;
       const double d_outside = start_inside ? d_end : d_start;
+      const Vec3 foot = outside - d_outside * plane.normal;
       // The signs differ strictly (one <= 0, the other > 0), so the
       // denominator is never zero and t lies in [0, 1].
       const double t = d_start / (d_start - d_end);
       const Vec3 crossing =
-          d_outside <= near_plane ? Vec3(outside - d_outside * plane.normal) : Vec3(start + t * (end - start));
+          d_outside <= near_plane && along_edge(foot, edge, near_plane) ? foot : Vec3(start + t * (end - start));
       ok &= out.push(crossing);
     }
     if (end_inside) ok &= out.push(end);

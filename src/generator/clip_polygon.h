@@ -49,15 +49,21 @@ class ClipPolygon {
   int size_ = 0;
 };
 
+/// The edge of the reference face that a side plane stands on.
+struct SideEdge {
+  Vec3 from, to;
+};
+
 /// One Sutherland-Hodgman pass: keeps the part of `in` inside `plane`, adding
 /// the crossing point of every edge that crosses it. `out` must not alias
 /// `in`. A point within `on_plane` of the plane is on it: inside, and its own
 /// crossing point (0: only a point exactly on the plane). An outside point
 /// within `near_plane` of it (a larger band, at least `on_plane`) crosses at
-/// its foot on the plane. Returns false if `out` overflowed (cannot happen
+/// its foot on the plane, where that foot lies on `edge` (when given) to
+/// within `near_plane`. Returns false if `out` overflowed (cannot happen
 /// when in.size() < capacity).
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
-                   double near_plane = 0);
+                   double near_plane = 0, const SideEdge* edge = nullptr);
 
 /// The tutorial's last step: drops the points outside `plane` without adding
 /// crossing points (it wants contact points, not the clipped polygon).

@@ -144,7 +144,9 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
   for (int k = 0; k < reference.polygon->size(); ++k) {
     Plane side;
     if (!reference_side(reference, k, side)) continue;
-    if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane)) return false;
+    const ClipPolygon& loop = *reference.polygon;
+    const SideEdge edge{loop[k], loop[(k + 1) % loop.size()]};
+    if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
     incident.take(scratch);
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
