@@ -120,10 +120,11 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   return {on_plane, std::max(on_plane, tol::world_rounding(reference.world_resolution))};
 }
 
-bool reference_side(const ClipFace& reference, int k, Plane& side) {
+bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
   const ClipPolygon& loop = *reference.polygon;
   const Vec3& from = loop[k];
   const Vec3& to = loop[(k + 1) % loop.size()];
+  edge = {from, to};
   // The loop runs counter-clockwise about the outward normal, so edge x
   // normal points out of the face, in its plane. Its length is the edge's
   // (never zero on a validated hull); normalising keeps distances in lengths.
@@ -143,9 +144,8 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
   ClipPolygon scratch;
   for (int k = 0; k < reference.polygon->size(); ++k) {
     Plane side;
-    if (!reference_side(reference, k, side)) continue;
-    const ClipPolygon& loop = *reference.polygon;
-    const SideEdge edge{loop[k], loop[(k + 1) % loop.size()]};
+    SideEdge edge;
+    if (!reference_side(reference, k, side, edge)) continue;
     if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
     incident.take(scratch);
     if (trace)

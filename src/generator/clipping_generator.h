@@ -29,6 +29,7 @@ struct ClipTrace {
 
 class ClipPolygon;
 struct Plane;
+struct SideEdge;
 
 /// A significant face in world space, and the polygon that stands for it.
 struct ClipFace {
@@ -91,9 +92,10 @@ struct SideBands {
 };
 SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
 /// The side of the reference prism through edge k of the reference loop:
-/// the plane through the edge perpendicular to the face, facing out. False
-/// for an edge of no length.
-bool reference_side(const ClipFace& reference, int k, Plane& side);
+/// the plane through the edge perpendicular to the face, facing out, and the
+/// edge itself (F36 bounds a foot crossing by it). False for an edge of no
+/// length.
+bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
 /// Sutherland-Hodgman against the prism over the reference face: through each
 /// edge, the plane perpendicular to the face.
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);

@@ -8,9 +8,8 @@ bool clip_sides_backwards(const mfz::ClipFace& reference, mfz::ClipPolygon& inci
   mfz::ClipPolygon scratch;
   for (int k = reference.polygon->size(); k-- > 0;) {
     mfz::Plane side;
-    if (!mfz::reference_side(reference, k, side)) continue;
-    const mfz::ClipPolygon& loop = *reference.polygon;
-    const mfz::SideEdge edge{loop[k], loop[(k + 1) % loop.size()]};
+    mfz::SideEdge edge;
+    if (!mfz::reference_side(reference, k, side, edge)) continue;
     if (!mfz::clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
     incident.take(scratch);
   }
