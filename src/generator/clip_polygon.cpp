@@ -28,9 +28,11 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
   bool ok = true;
   Vec3 start = in[in.size() - 1];
   double d_start = plane.signed_distance(start);
+  bool start_crossing = in.is_crossing(in.size() - 1);
   for (int k = 0; k < in.size(); ++k) {
     const Vec3& end = in[k];
     const double d_end = plane.signed_distance(end);
+    const bool end_crossing = in.is_crossing(k);
     const bool start_inside = d_start <= on_plane, end_inside = d_end <= on_plane;
     // An edge whose inside end is on the plane crosses it there: that end is
     // kept anyway. Interpolating would divide rounding by rounding when the
@@ -43,19 +45,30 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
       // lies along the side's edge: past its end, by the sharp corner of a
       // sliver 3.1e-7 rad wide, each of the two sides took a point 6e-8 out
       // for one on it, and a contact stood 0.23 beyond the corner (F36).
+      // Only a corner's rounding is the world's: a crossing an earlier plane
+      // made lies on its edge, and its foot leaves the polygon. A needle's
+      // edge, steep to the reference face, crossed one side 6.5e-8 past
+      // where it left the other, inside that side's band; its foot stood
+      // 6e-8 higher than the edge's true crossing, above the reference
+      // plane, and the contact there was dropped or kept as the sides' order
+      // went (vertex-order, 1e6 from the origin, --seed 2026112606).
       const Vec3& outside = start_inside ? end : start;
       const double d_outside = start_inside ? d_end : d_start;
+      const bool outside_is_corner = !(start_inside ? end_crossing : start_crossing);
       const Vec3 foot = outside - d_outside * plane.normal;
-      // The signs differ strictly (one <= 0, the other > 0), so the
-      // denominator is never zero and t lies in [0, 1].
-      const double t = d_start / (d_start - d_end);
-      const Vec3 crossing =
-          d_outside <= near_plane && along_edge(foot, edge, near_plane) ? foot : Vec3(start + t * (end - start));
-      ok &= out.push(crossing);
+      if (outside_is_corner && d_outside <= near_plane && along_edge(foot, edge, near_plane)) {
+        ok &= out.push(foot);
+      } else {
+        // The signs differ strictly (one <= 0, the other > 0), so the
+        // denominator is never zero and t lies in [0, 1].
+        const double t = d_start / (d_start - d_end);
+        ok &= out.push(start + t * (end - start), true);
+      }
     }
-    if (end_inside) ok &= out.push(end);
+    if (end_inside) ok &= out.push(end, end_crossing);
     start = end;
     d_start = d_end;
+    start_crossing = end_crossing;
   }
   return ok;
 }

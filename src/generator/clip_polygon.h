@@ -20,16 +20,21 @@ struct Plane {
   double signed_distance(const Vec3& p) const { return normal.dot(p) - offset; }
 };
 
-/// A polygon of at most kMaxPolygonVertices points, in loop order.
+/// A polygon of at most kMaxPolygonVertices points, in loop order. Each
+/// point knows whether a clip pass made it where an edge crossed a plane (a
+/// crossing), or is a corner of the polygon first given (or such a corner
+/// moved onto a plane).
 class ClipPolygon {
  public:
   int size() const { return size_; }
   bool empty() const { return size_ == 0; }
   const Vec3& operator[](int i) const { return points_[i]; }
+  bool is_crossing(int i) const { return crossing_[i]; }
   void clear() { size_ = 0; }
   /// False, and nothing added, when full.
-  bool push(const Vec3& p) {
+  bool push(const Vec3& p, bool crossing = false) {
     if (size_ == kMaxPolygonVertices) return false;
+    crossing_[size_] = crossing;
     points_[size_++] = p;
     return true;
   }
@@ -37,15 +42,17 @@ class ClipPolygon {
   /// (12 KiB), which a clip pass per side plane would otherwise copy.
   void take(const ClipPolygon& other) {
     std::copy(other.points_.begin(), other.points_.begin() + other.size_, points_.begin());
+    std::copy(other.crossing_.begin(), other.crossing_.begin() + other.size_, crossing_.begin());
     size_ = other.size_;
   }
   void erase(int i) {
-    for (int k = i + 1; k < size_; ++k) points_[k - 1] = points_[k];
+    for (int k = i + 1; k < size_; ++k) points_[k - 1] = points_[k], crossing_[k - 1] = crossing_[k];
     --size_;
   }
 
  private:
   std::array<Vec3, kMaxPolygonVertices> points_;
+  std::array<bool, kMaxPolygonVertices> crossing_;
   int size_ = 0;
 };
 
@@ -57,10 +64,10 @@ struct SideEdge {
 /// One Sutherland-Hodgman pass: keeps the part of `in` inside `plane`, adding
 /// the crossing point of every edge that crosses it. `out` must not alias
 /// `in`. A point within `on_plane` of the plane is on it: inside, and its own
-/// crossing point (0: only a point exactly on the plane). An outside point
-/// within `near_plane` of it (a larger band, at least `on_plane`) crosses at
-/// its foot on the plane, where that foot lies on `edge` (when given) to
-/// within `near_plane`. Returns false if `out` overflowed (cannot happen
+/// crossing point (0: only a point exactly on the plane). An outside corner
+/// (no crossing) within `near_plane` of it (a larger band, at least
+/// `on_plane`) crosses at its foot on the plane, where that foot lies on
+/// `edge` (when given) to within `near_plane`. Returns false if `out` overflowed (cannot happen
 /// when in.size() < capacity).
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
                    double near_plane = 0, const SideEdge* edge = nullptr);
