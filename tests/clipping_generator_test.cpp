@@ -221,5 +221,31 @@ TEST(ClippingGenerator, AKeptPointsColumnIsAsWideInATurnedWorld) {
   EXPECT_EQ(in_turned_world.contact_count, as_given.contact_count);
 }
 
+// A sliver face of A 2e14 long, parallel to a face of B, whose hull reaches
+// 2.8e17 from A: an edge of each spans the face's normal, and its overlap is
+// the face's to the rounding of the vertices, about 60 in any projection.
+// Turned and shifted 2e17, the pair came out 16 shallower than the face, past
+// a margin taken of the projections (1.2e9), and its one point replaced the
+// sliver's three contacts 2e14 apart (F38, rigid-motion).
+TEST(ClippingGenerator, AFaceWinsAnEdgePairInItsPlaneByTheRoundingOfTheVerticesNotOfTheirProjections) {
+  const CaseParse parsed = read_case_file(
+      test::corpus_path("regressions/f38-an-edge-pair-in-a-slivers-face-beat-the-face-by-rounding-2e17-out.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = *make_scene(*parsed.value).scene;
+  const Quat turn(0.9004471023526769, 0.11624942883566838, 0.23249885767133677, 0.3487482865070052);
+  const Vec3 shift(196000000673400000, -84000000288600000, 56000000192400000);
+  const auto moved = [&](const Pose& p) { return Pose{turn * p.position + shift, (turn * p.orientation).normalized()}; };
+  mfz_manifold m{};
+  ASSERT_EQ(generate_clipping_manifold(s.hull_a.view(), moved(s.pose_a).to_abi(), s.hull_b.view(),
+                                       moved(s.pose_b).to_abi(), m),
+            0);
+  double span = 0;
+  for (int i = 0; i < m.contact_count; ++i)
+    for (int j = 0; j < i; ++j)
+      span = std::max(span, (to_vec(m.contacts[i].point_on_a) - to_vec(m.contacts[j].point_on_a)).norm());
+  EXPECT_EQ(m.contact_count, 3);
+  EXPECT_GT(span, 1e14) << "the contacts lie together: an edge pair's point, not the sliver's face";
+}
+
 }  // namespace
 }  // namespace mfz

@@ -54,9 +54,15 @@ bool consider_projected(const PosedHull& a, const PosedHull& b, const Interval& 
   if (kind == AxisKind::face_a) b_along_axis = true;
   if (kind == AxisKind::face_b) b_along_axis = false;
   const double overlap = b_along_axis ? b_above : b_below;
-  // The margin adds the world frame's rounding (F9): far from the origin an
-  // edge pair along a face normal can come out smaller by rounding alone.
-  const double world = std::max({std::abs(ia.min), std::abs(ia.max), std::abs(ib.min), std::abs(ib.max)});
+  // The margin adds the frame's rounding (F9): far from the origin an edge
+  // pair along a face normal can come out smaller by rounding alone. It is
+  // the rounding of the vertices' coordinates, not of their projections: a
+  // vertex 2.8e17 from A's position projects to 1.2e9 along a normal nearly
+  // perpendicular to it, and carries a rounding of 60 into it; an edge pair
+  // lying in a sliver's face and a face of B came out 16 shallower than
+  // that face in a turned frame, and its one point replaced the sliver's
+  // contacts 2e14 long (F38, rigid-motion, manifuzz fuzz after F37).
+  const double world = std::max(a.reach_from_origin(), b.reach_from_origin());
   const double slack = tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) +
                        tol::world_rounding(world);
   const bool edge_after_face = kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;

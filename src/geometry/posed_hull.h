@@ -3,6 +3,7 @@
 /// A hull of the C ABI seen in world space through its pose, without copying:
 /// the generator's hot path reads local vertices and rotates on demand, so a
 /// call allocates nothing whatever the hull's size.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -59,6 +60,19 @@ class PosedHull {
   Vec3 world_face_normal(int f) const { return rotation_ * to_vec(hull_.face_normals[f]); }
   /// World position of the k-th vertex of face f's loop.
   Vec3 world_face_point(int f, int k) const { return world_vertex(face_vertex(f, k)); }
+
+  /// The largest distance of a vertex from the frame's origin: what the
+  /// rounding of a projection onto any unit axis is a fraction of, however
+  /// small the projection (a turn of the frame keeps it). Measured on first
+  /// use.
+  double reach_from_origin() const {
+    if (!(reach_from_origin_ >= 0)) {
+      double largest = 0;
+      for (int i = 0; i < hull_.vertex_count; ++i) largest = std::max(largest, world_vertex(i).squaredNorm());
+      reach_from_origin_ = std::sqrt(largest);
+    }
+    return reach_from_origin_;
+  }
 
   /// Projection of the hull onto a world direction (need not be unit).
   Interval project(const Vec3& world_axis) const {
@@ -188,6 +202,7 @@ class PosedHull {
   bool cached_;
   mutable const HullTopology* topology_ = nullptr;
   mutable bool topology_looked_up_ = false;
+  mutable double reach_from_origin_ = -1;
   Vec3 world_[kCachedVertices];
   double xs_[kCachedVertices], ys_[kCachedVertices], zs_[kCachedVertices];
 };
