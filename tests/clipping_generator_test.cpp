@@ -221,6 +221,36 @@ TEST(ClippingGenerator, AKeptPointsColumnIsAsWideInATurnedWorld) {
   EXPECT_EQ(in_turned_world.contact_count, as_given.contact_count);
 }
 
+// The sides kept once per call are the sides computed as each is clipped
+// against, to the bit: a 6-gon's kept, a 100-gon's (past kKeptPrismSides)
+// computed, and a tilted square clipped against each gives the same points
+// either way.
+TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachClip) {
+  for (const int corners : {3, 6, kKeptPrismSides, 100}) {
+    ClipPolygon loop, incident;
+    for (int k = 0; k < corners; ++k) {
+      const double t = 2 * M_PI * k / corners;
+      loop.push(Vec3(std::cos(t), std::sin(t), 0));
+    }
+    for (const Vec3& p : {Vec3(0.3, -1.2, -0.01), Vec3(1.4, 0.1, -0.02), Vec3(0.2, 1.3, 0.01), Vec3(-0.9, 0, 0.02)})
+      incident.push(p);
+    ClipFace reference;
+    reference.normal = Vec3(0, 0, 1);
+    reference.polygon = &loop;
+    reference.world_resolution = 1;
+    ClipPolygon computed = incident, kept = incident;
+    ASSERT_TRUE(clip_to_reference_prism(reference, computed, nullptr));
+    PrismSides sides;
+    keep_prism_sides(reference, sides);
+    EXPECT_EQ(sides.count, corners <= kKeptPrismSides ? corners : 0);
+    reference.sides = &sides;
+    ASSERT_TRUE(clip_to_reference_prism(reference, kept, nullptr));
+    ASSERT_EQ(kept.size(), computed.size()) << corners << " corners";
+    ASSERT_GT(kept.size(), 4) << corners << " corners: the square is clipped";
+    for (int k = 0; k < kept.size(); ++k) EXPECT_EQ(kept[k], computed[k]) << corners << " corners, point " << k;
+  }
+}
+
 // A sliver face of A 2e14 long, parallel to a face of B, whose hull reaches
 // 2.8e17 from A: an edge of each spans the face's normal, and its overlap is
 // the face's to the rounding of the vertices, about 60 in any projection.

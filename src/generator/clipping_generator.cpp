@@ -135,6 +135,12 @@ bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edg
   return true;
 }
 
+void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
+  const int n = reference.polygon->size();
+  sides.count = n <= kKeptPrismSides ? n : 0;
+  for (int k = 0; k < sides.count; ++k) sides.spans[k] = reference_side(reference, k, sides.plane[k], sides.edge[k]);
+}
+
 // F1: the clipping method's contact region is the prism over the reference
 // face. The adjacent faces' planes only bound it where those faces stand
 // perpendicular; where they slope inwards the region reaches past the face and
@@ -142,10 +148,13 @@ bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edg
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
   ClipPolygon scratch;
+  const PrismSides* kept = reference.sides && reference.sides->count > 0 ? reference.sides : nullptr;
   for (int k = 0; k < reference.polygon->size(); ++k) {
-    Plane side;
-    SideEdge edge;
-    if (!reference_side(reference, k, side, edge)) continue;
+    Plane computed_side;
+    SideEdge computed_edge;
+    if (kept ? !kept->spans[k] : !reference_side(reference, k, computed_side, computed_edge)) continue;
+    const Plane& side = kept ? kept->plane[k] : computed_side;
+    const SideEdge& edge = kept ? kept->edge[k] : computed_edge;
     if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
     incident.take(scratch);
     if (trace)
@@ -280,6 +289,9 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   ClipPolygon reference_polygon, polygon, clipped;
   steps.face_polygon(*reference.hull, reference.index, reference_polygon);
   reference.polygon = &reference_polygon;
+  PrismSides sides;
+  keep_prism_sides(reference, sides);
+  reference.sides = &sides;
   // F11: equally aligned incident faces (a symmetric corner) are all clipped
   // and their contacts joined: picking one would leave the choice to rounding.
   int incident_faces[kMaxTiedFaces] = {incident.index};

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "manifuzz/abi.h"
+#include "generator/clip_polygon.h"
 #include "generator/sat.h"
 #include "generator/significant_faces.h"
 
@@ -27,9 +28,22 @@ struct ClipTrace {
   std::vector<Step> steps;       ///< the incident polygon after each clip
 };
 
-class ClipPolygon;
-struct Plane;
-struct SideEdge;
+/// The sides of the prism over a reference polygon of up to this many
+/// corners are computed once per call and kept; a larger polygon's are
+/// computed as each is clipped against.
+inline constexpr int kKeptPrismSides = 64;
+
+/// The kept sides of the reference prism (reference_side for each edge of
+/// the loop, in loop order). Every face clipped against the prism reads
+/// them: the incident faces, and F27's faces below the reference plane
+/// (a 64-gon cap's sides were computed again for each of its cylinder's
+/// faces, 4% of the benchmark's instructions).
+struct PrismSides {
+  int count = 0;  ///< the loop's size; 0: not kept
+  Plane plane[kKeptPrismSides];
+  SideEdge edge[kKeptPrismSides];
+  bool spans[kKeptPrismSides];  ///< false for an edge of no length
+};
 
 /// A significant face in world space, and the polygon that stands for it.
 struct ClipFace {
@@ -41,6 +55,8 @@ struct ClipFace {
   /// longer pose position (the frame itself is centred on A, F21; a length,
   /// which a turn of the world keeps, F35).
   double world_resolution = 0;
+  /// The reference prism's sides, when kept (keep_prism_sides).
+  const PrismSides* sides = nullptr;
 };
 
 /// The generator's steps, each replaceable: the project's deliberately broken
@@ -96,6 +112,9 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
 /// edge itself (F36 bounds a foot crossing by it). False for an edge of no
 /// length.
 bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
+/// Computes each side of the prism over `reference`'s polygon into `sides`,
+/// when it has at most kKeptPrismSides corners (else sides.count is 0).
+void keep_prism_sides(const ClipFace& reference, PrismSides& sides);
 /// Sutherland-Hodgman against the prism over the reference face: through each
 /// edge, the plane perpendicular to the face.
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);
