@@ -141,6 +141,14 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   for (int k = 0; k < sides.count; ++k) sides.spans[k] = reference_side(reference, k, sides.plane[k], sides.edge[k]);
 }
 
+bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
+  const PrismSides* kept = reference.sides;
+  if (!kept || kept->count == 0) return reference_side(reference, k, side, edge);
+  side = kept->plane[k];
+  edge = kept->edge[k];
+  return kept->spans[k];
+}
+
 // F1: the clipping method's contact region is the prism over the reference
 // face. The adjacent faces' planes only bound it where those faces stand
 // perpendicular; where they slope inwards the region reaches past the face and
@@ -148,13 +156,10 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
   ClipPolygon scratch;
-  const PrismSides* kept = reference.sides && reference.sides->count > 0 ? reference.sides : nullptr;
   for (int k = 0; k < reference.polygon->size(); ++k) {
-    Plane computed_side;
-    SideEdge computed_edge;
-    if (kept ? !kept->spans[k] : !reference_side(reference, k, computed_side, computed_edge)) continue;
-    const Plane& side = kept ? kept->plane[k] : computed_side;
-    const SideEdge& edge = kept ? kept->edge[k] : computed_edge;
+    Plane side;
+    SideEdge edge;
+    if (!prism_side(reference, k, side, edge)) continue;
     if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
     incident.take(scratch);
     if (trace)

@@ -115,6 +115,8 @@ bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edg
 /// Computes each side of the prism over `reference`'s polygon into `sides`,
 /// when it has at most kKeptPrismSides corners (else sides.count is 0).
 void keep_prism_sides(const ClipFace& reference, PrismSides& sides);
+/// reference_side, read from the kept sides when `reference` has them.
+bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
 /// Sutherland-Hodgman against the prism over the reference face: through each
 /// edge, the plane perpendicular to the face.
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);

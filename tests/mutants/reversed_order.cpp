@@ -9,7 +9,7 @@ bool clip_sides_backwards(const mfz::ClipFace& reference, mfz::ClipPolygon& inci
   for (int k = reference.polygon->size(); k-- > 0;) {
     mfz::Plane side;
     mfz::SideEdge edge;
-    if (!mfz::reference_side(reference, k, side, edge)) continue;
+    if (!mfz::prism_side(reference, k, side, edge)) continue;
     if (!mfz::clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
     incident.take(scratch);
   }
