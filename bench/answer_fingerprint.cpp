@@ -1,0 +1,112 @@
+// Whether a change to a generator changed any of its answers: every pair of
+// the generator benchmark's families, in both orders (A, B and B, A), through
+// each plugin named, and per family a SHA-256 of the answers' bytes (the
+// verdict, the normal, the penetration, and each contact in order). With two
+// plugins it also counts the calls whose answers differ and shows the first.
+// A speed change that claims to keep every answer is checked with it against
+// the plugin built before the change, on the same pairs the timings use.
+//
+//   answer_fingerprint PLUGIN [BASELINE]     (`builtin` names the built-in)
+//
+// Exits 0 when the answers are the same bytes (or with one plugin), 1 when
+// two plugins differ, 2 on bad arguments or a library that is no generator.
+#include <openssl/evp.h>
+
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "bench_families.h"
+#include "harness/generator.h"
+
+namespace mfz {
+namespace {
+
+// The bytes of an answer that a generator decides; the rest of the
+// manifold is the harness's poison.
+std::vector<unsigned char> answer_bytes(int32_t status, const mfz_manifold& m) {
+  std::vector<unsigned char> bytes;
+  bytes.reserve(sizeof status + sizeof m);
+  const auto put = [&bytes](const void* data, size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    bytes.insert(bytes.end(), p, p + size);
+  };
+  put(&status, sizeof status);
+  if (status != 0) return bytes;
+  put(&m.colliding, sizeof m.colliding);
+  put(&m.normal, sizeof m.normal);
+  put(&m.penetration, sizeof m.penetration);
+  put(&m.contact_count, sizeof m.contact_count);
+  const int count = m.contact_count < 0 || m.contact_count > MFZ_MAX_CONTACTS ? 0 : m.contact_count;
+  put(m.contacts, sizeof(mfz_contact) * static_cast<size_t>(count));
+  return bytes;
+}
+
+std::vector<unsigned char> answer(const Generator& g, const Scene& s, bool swapped) {
+  const mfz_hull a = s.hull_a.view(), b = s.hull_b.view();
+  const mfz_pose pa = s.abi_pose_a(), pb = s.abi_pose_b();
+  mfz_manifold out;
+  const int32_t status = swapped ? g.generate(b, pb, a, pa, out) : g.generate(a, pa, b, pb, out);
+  return answer_bytes(status, out);
+}
+
+struct Digest {
+  std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context{EVP_MD_CTX_new(), EVP_MD_CTX_free};
+  Digest() { EVP_DigestInit_ex(context.get(), EVP_sha256(), nullptr); }
+  void add(const std::vector<unsigned char>& bytes) { EVP_DigestUpdate(context.get(), bytes.data(), bytes.size()); }
+  std::string hex() {
+    unsigned char digest[EVP_MAX_MD_SIZE];
+    unsigned int length = 0;
+    EVP_DigestFinal_ex(context.get(), digest, &length);
+    std::string text;
+    char two[3];
+    for (unsigned int i = 0; i < length; ++i) std::snprintf(two, sizeof two, "%02x", digest[i]), text += two;
+    return text.substr(0, 16);
+  }
+};
+
+std::optional<Generator> open_generator(const char* spec) {
+  if (std::strcmp(spec, "builtin") == 0) return Generator::builtin();
+  std::string error;
+  auto generator = Generator::open(spec, error);
+  if (!generator) std::fprintf(stderr, "answer_fingerprint: %s: %s\n", spec, error.c_str());
+  return generator;
+}
+
+int run(int argc, char** argv) {
+  if (argc < 2 || argc > 3) {
+    std::fprintf(stderr, "usage: answer_fingerprint PLUGIN [BASELINE]\n");
+    return 2;
+  }
+  const std::optional<Generator> plugin = open_generator(argv[1]);
+  const std::optional<Generator> baseline = argc == 3 ? open_generator(argv[2]) : std::nullopt;
+  if (!plugin || (argc == 3 && !baseline)) return 2;
+  long long calls = 0, differing = 0;
+  for (const bench::BenchFamily& family : bench::bench_families()) {
+    Digest digest;
+    long long family_differing = 0;
+    for (size_t i = 0; i < family.scenes.size(); ++i)
+      for (const bool swapped : {false, true}) {
+        const std::vector<unsigned char> bytes = answer(*plugin, family.scenes[i], swapped);
+        digest.add(bytes);
+        ++calls;
+        if (!baseline || answer(*baseline, family.scenes[i], swapped) == bytes) continue;
+        if (differing == 0)
+          std::printf("first difference: %s, pair %zu%s\n", family.name.c_str(), i, swapped ? " (B, A)" : "");
+        ++differing, ++family_differing;
+      }
+    std::printf("%-20s %s", family.name.c_str(), digest.hex().c_str());
+    if (baseline) std::printf("  %lld of %zu calls differ", family_differing, 2 * family.scenes.size());
+    std::printf("\n");
+  }
+  if (baseline) std::printf("%lld of %lld calls differ\n", differing, calls);
+  return differing == 0 ? 0 : 1;
+}
+
+}  // namespace
+}  // namespace mfz
+
+int main(int argc, char** argv) { return mfz::run(argc, argv); }
