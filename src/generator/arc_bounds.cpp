@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "geometry/vector_lanes.h"
+
 namespace mfz {
 
 namespace {
@@ -45,7 +47,7 @@ inline double lane_margin(const LaneArc& k, double vx, double vy, double vz, dou
 
 }  // namespace
 
-void arcs_above(const EdgeArcs& arcs, const Vec3& centre, double vertex_floor, const Vec3& shared,
+MFZ_VECTOR_LANES void arcs_above(const EdgeArcs& arcs, const Vec3& centre, double vertex_floor, const Vec3& shared,
                 double shared_floor, double* margin) {
   const ArcColumns& c = arcs.columns();
   const double ox = centre.x(), oy = centre.y(), oz = centre.z();

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "geometry/vector_lanes.h"
+
 namespace mfz {
 
 namespace {
@@ -24,9 +26,13 @@ void EdgeArcs::build(const PosedHull& hull) {
   if (hull.vertex_count() > kCachedVertices) return;
   // The twins are known already for a hull whose topology is kept.
   if (const HullTopology* topology = hull.topology()) {
+    // Each face's normal turned once, not once for each of its edges'
+    // ends: a face has three or more edges, each edge two faces.
+    Vec3 normals[kTopologyMaxFaces];
+    for (int f = 0; f < hull.face_count(); ++f) normals[f] = hull.world_face_normal(f);
     for (int e = 0; e < topology->edge_count(); ++e) {
       const TopologyEdge& edge = topology->edge(e);
-      const Vec3 n_face = hull.world_face_normal(edge.face), n_twin = hull.world_face_normal(edge.twin);
+      const Vec3 &n_face = normals[edge.face], &n_twin = normals[edge.twin];
       arcs_[count_++] = {edge.v0, edge.v1, edge.face, edge.twin, n_face, n_twin, n_twin.cross(n_face)};
     }
     complete_ = true;
@@ -64,7 +70,7 @@ void EdgeArcs::fill_columns(const PosedHull& hull) {
 // c . across_a times b . across_b (one crossing, not its antipode). Each is
 // kept below the slack; the greatest of the three stands for them, so that
 // the lanes hold doubles only.
-int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
+MFZ_VECTOR_LANES int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
   // The ends are unit vectors and so is |across| at most: each dot product
   // is within a few ulps of the test's own, and so is their product.
   constexpr double kLaneRounding = 1e-13;

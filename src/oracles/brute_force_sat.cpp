@@ -6,6 +6,7 @@
 
 #include "geometry/posed_hull.h"
 #include "geometry/tolerances.h"
+#include "geometry/vector_lanes.h"
 
 namespace mfz {
 
@@ -43,24 +44,18 @@ struct PointColumns {
   }
 };
 
-// The row's loops are built twice, for AVX2 and for any x86-64, and the
-// processor picks at load time: the same operations in the same order in
-// each lane, so the same bits. With the normalisation in lanes too (this
+// The row's loops are built for AVX2 and for any x86-64
+// (geometry/vector_lanes.h). With the normalisation in lanes too (this
 // file's options in src/CMakeLists.txt), the oracle went from 7.3 to 5.5 us
 // on 8-point hulls and from 234 to 211 us on 32-point hulls, with the same
 // bits on 18.5 million axes.
-#if defined(__x86_64__) && defined(__GNUC__)
-#define MFZ_ROW_LANES __attribute__((target_clones("avx2", "default")))
-#else
-#define MFZ_ROW_LANES
-#endif
 
 // A row's unit axes: A's edge `ea` (of length `length_a`) crossed with each
 // of B's edges (columns vx, vy, vz, lengths length_b), normalised, or zero
 // where the edges are parallel (no axis: a unit axis is never zero). The
 // same sums as Eigen's cross() and norm() on Vec3, (x * x + y * y) + z * z,
 // so the same bits.
-MFZ_ROW_LANES void axes_of_row(const Vec3& ea, double length_a, const double* vx, const double* vy,
+MFZ_VECTOR_LANES void axes_of_row(const Vec3& ea, double length_a, const double* vx, const double* vy,
                                const double* vz, const double* length_b, size_t row, double* nx, double* ny,
                                double* nz) {
   const double ax = ea.x(), ay = ea.y(), az = ea.z();
@@ -81,7 +76,7 @@ MFZ_ROW_LANES void axes_of_row(const Vec3& ea, double length_a, const double* vx
 
 // Every point projected onto a row of axes (columns nx, ny, nz): the least
 // and the greatest projection per axis.
-MFZ_ROW_LANES void project_row(const PointColumns& points, const double* nx, const double* ny, const double* nz,
+MFZ_VECTOR_LANES void project_row(const PointColumns& points, const double* nx, const double* ny, const double* nz,
                                size_t row, double* lowest, double* highest) {
   for (size_t j = 0; j < row; ++j) lowest[j] = INFINITY, highest[j] = -INFINITY;
   const double *px = points.xyz.data(), *py = px + points.n, *pz = py + points.n;

@@ -1,0 +1,12 @@
+#pragma once
+/// \file
+/// Loops that run over many columns at once in vector lanes are built twice,
+/// for AVX2 and for any x86-64, and the processor picks at load time. Each
+/// lane does the same operations in the same order either way (AVX2 brings
+/// no fused multiply-add, and the build forbids contraction), so both give
+/// the same bits; AVX2 only runs four doubles at a time instead of two.
+#if defined(__x86_64__) && defined(__GNUC__)
+#define MFZ_VECTOR_LANES __attribute__((target_clones("avx2", "default")))
+#else
+#define MFZ_VECTOR_LANES
+#endif
