@@ -45,17 +45,16 @@ inline double lane_margin(const LaneArc& k, double vx, double vy, double vz, dou
   return std::min(ends, k.s2 > kArcBoundMargin * kArcBoundMargin ? beyond : ahead);
 }
 
-}  // namespace
-
-MFZ_VECTOR_LANES void arcs_above(const EdgeArcs& arcs, const Vec3& centre, double vertex_floor, const Vec3& shared,
-                double shared_floor, double* margin) {
-  const ArcColumns& c = arcs.columns();
+// Built for AVX2 and for any x86-64 (vector_lanes.h), file-local like
+// every such clone: clang 14 links a clone only where its callers see its
+// definition.
+MFZ_VECTOR_LANES void margins_in_lanes(const ArcColumns& c, int count, const Vec3& centre, double vertex_floor,
+                                       const Vec3& shared, double shared_floor, double* margin) {
   const double ox = centre.x(), oy = centre.y(), oz = centre.z();
   const double sx = shared.x(), sy = shared.y(), sz = shared.z();
   const double *fx = c.face_x, *fy = c.face_y, *fz = c.face_z;
   const double *tx = c.twin_x, *ty = c.twin_y, *tz = c.twin_z;
   const double *vx = c.v0_x, *vy = c.v0_y, *vz = c.v0_z;
-  const int count = arcs.size();
 #pragma omp simd
   for (int i = 0; i < count; ++i) {
     LaneArc k;
@@ -66,6 +65,13 @@ MFZ_VECTOR_LANES void arcs_above(const EdgeArcs& arcs, const Vec3& centre, doubl
     margin[i] = std::min(lane_margin(k, vx[i] - ox, vy[i] - oy, vz[i] - oz, vertex_floor),
                          lane_margin(k, sx, sy, sz, shared_floor));
   }
+}
+
+}  // namespace
+
+void arcs_above(const EdgeArcs& arcs, const Vec3& centre, double vertex_floor, const Vec3& shared,
+                double shared_floor, double* margin) {
+  margins_in_lanes(arcs.columns(), arcs.size(), centre, vertex_floor, shared, shared_floor, margin);
 }
 
 }  // namespace mfz

@@ -70,16 +70,16 @@ void EdgeArcs::fill_columns(const PosedHull& hull) {
 // c . across_a times b . across_b (one crossing, not its antipode). Each is
 // kept below the slack; the greatest of the three stands for them, so that
 // the lanes hold doubles only.
-MFZ_VECTOR_LANES int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
-  // The ends are unit vectors and so is |across| at most: each dot product
-  // is within a few ulps of the test's own, and so is their product.
-  constexpr double kLaneRounding = 1e-13;
+namespace {
+
+// The greatest of the three products for each of B's arcs (columns `k`)
+// against A's arc. Built for AVX2 and for any x86-64 (vector_lanes.h); a
+// member function cannot be, as clang 14 does not link a clone of one
+// defined apart from its class.
+MFZ_VECTOR_LANES void worst_products(const ArcColumns& k, int count, const EdgeArc& arc_a, double* worst) {
   const double ax = arc_a.across.x(), ay = arc_a.across.y(), az = arc_a.across.z();
   const double px = arc_a.n_face.x(), py = arc_a.n_face.y(), pz = arc_a.n_face.z();
   const double qx = arc_a.n_twin.x(), qy = arc_a.n_twin.y(), qz = arc_a.n_twin.z();
-  const int count = count_;
-  const ArcColumns& k = columns_;
-  double worst[kMaxArcs];
 #pragma omp simd
   for (int j = 0; j < count; ++j) {
     const double c = k.face_x[j] * ax + k.face_y[j] * ay + k.face_z[j] * az;
@@ -88,6 +88,17 @@ MFZ_VECTOR_LANES int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
     const double b = k.across_x[j] * qx + k.across_y[j] * qy + k.across_z[j] * qz;
     worst[j] = std::max(std::max(c * d, a * b), c * b);
   }
+}
+
+}  // namespace
+
+int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
+  // The ends are unit vectors and so is |across| at most: each dot product
+  // is within a few ulps of the test's own, and so is their product.
+  constexpr double kLaneRounding = 1e-13;
+  const int count = count_;
+  double worst[kMaxArcs];
+  worst_products(columns_, count, arc_a, worst);
   // Without a branch: which arcs cross follows no pattern a predictor
   // could learn.
   int found = 0;
