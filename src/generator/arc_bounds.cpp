@@ -45,9 +45,7 @@ inline double lane_margin(const LaneArc& k, double vx, double vy, double vz, dou
   return std::min(ends, k.s2 > kArcBoundMargin * kArcBoundMargin ? beyond : ahead);
 }
 
-// Built for AVX2 and for any x86-64 (vector_lanes.h), file-local like
-// every such clone: clang 14 links a clone only where its callers see its
-// definition.
+// Built for AVX2 and for any x86-64; file-local, as vector_lanes.h asks.
 MFZ_VECTOR_LANES void margins_in_lanes(const ArcColumns& c, int count, const Vec3& centre, double vertex_floor,
                                        const Vec3& shared, double shared_floor, double* margin) {
   const double ox = centre.x(), oy = centre.y(), oz = centre.z();

@@ -73,9 +73,8 @@ void EdgeArcs::fill_columns(const PosedHull& hull) {
 namespace {
 
 // The greatest of the three products for each of B's arcs (columns `k`)
-// against A's arc. Built for AVX2 and for any x86-64 (vector_lanes.h); a
-// member function cannot be, as clang 14 does not link a clone of one
-// defined apart from its class.
+// against A's arc. Built for AVX2 and for any x86-64; file-local, as
+// vector_lanes.h asks.
 MFZ_VECTOR_LANES void worst_products(const ArcColumns& k, int count, const EdgeArc& arc_a, double* worst) {
   const double ax = arc_a.across.x(), ay = arc_a.across.y(), az = arc_a.across.z();
   const double px = arc_a.n_face.x(), py = arc_a.n_face.y(), pz = arc_a.n_face.z();

@@ -38,8 +38,24 @@ inline constexpr int kCachedVertices = kTopologyMaxVertices;
 /// wider lanes save.
 inline constexpr int kWideProjectionVertices = 16;
 
-/// [min, max] of (ax * x + ay * y) + az * z over the columns' n points, in
-/// vector lanes: the same sums as the inline loop, so the same bits.
+/// [min, max] of (ax * x + ay * y) + az * z over the columns' n points: the
+/// coordinates apart (x, y, z arrays), so that the loop runs in vector
+/// lanes; each dot product is summed in Eigen's order, (x + y) + z, so the
+/// interval is the same to the bit.
+inline Interval columns_interval(const double* xs, const double* ys, const double* zs, int n, double ax, double ay,
+                                 double az) {
+  double low = std::numeric_limits<double>::infinity(), high = -low;
+#pragma omp simd reduction(min : low) reduction(max : high)
+  for (int i = 0; i < n; ++i) {
+    const double d = (ax * xs[i] + ay * ys[i]) + az * zs[i];
+    low = d < low ? d : low;
+    high = d > high ? d : high;
+  }
+  return {low, high};
+}
+
+/// columns_interval built for AVX2 as well, four points at a time where the
+/// processor has it (geometry/vector_lanes.h).
 Interval project_columns(const double* xs, const double* ys, const double* zs, int n, double ax, double ay,
                          double az);
 
@@ -88,21 +104,10 @@ class PosedHull {
   /// Projection of the hull onto a world direction (need not be unit).
   Interval project(const Vec3& world_axis) const {
     if (cached_) {
-      // The coordinates apart (x, y, z arrays), so that the loop runs two
-      // or four vertices at a time; each dot product is summed in Eigen's
-      // order, (x + y) + z, so the interval is the same to the bit.
       const double ax = world_axis.x(), ay = world_axis.y(), az = world_axis.z();
-      if (hull_.vertex_count > kWideProjectionVertices)
-        return project_columns(xs_, ys_, zs_, hull_.vertex_count, ax, ay, az);
-      double low = std::numeric_limits<double>::infinity(), high = -low;
       const int n = hull_.vertex_count;
-#pragma omp simd reduction(min : low) reduction(max : high)
-      for (int i = 0; i < n; ++i) {
-        const double d = (ax * xs_[i] + ay * ys_[i]) + az * zs_[i];
-        low = d < low ? d : low;
-        high = d > high ? d : high;
-      }
-      return {low, high};
+      return n > kWideProjectionVertices ? project_columns(xs_, ys_, zs_, n, ax, ay, az)
+                                         : columns_interval(xs_, ys_, zs_, n, ax, ay, az);
     }
     const Vec3 local_axis = rotation_.transpose() * world_axis;
     Interval range;

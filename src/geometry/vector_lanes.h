@@ -7,10 +7,10 @@
 /// the same bits; AVX2 only runs four doubles at a time instead of two.
 ///
 /// Mark only a function local to its file (an anonymous namespace), and call
-/// it from an ordinary one: clang 14 does not link a clone that a caller in
-/// another file sees declared without the mark, and a member function defined
-/// apart from its class cannot carry it at all (`EdgeArcs::crossing` built
-/// with g++ and failed to link with clang++).
+/// it from an ordinary one, as the brute-force oracle's rows always were: a
+/// member function defined apart from its class and marked there built with
+/// g++ but not with clang++ 14, whose callers in other files found no symbol
+/// (`EdgeArcs::crossing`, from sat.cpp).
 #if defined(__x86_64__) && defined(__GNUC__)
 #define MFZ_VECTOR_LANES __attribute__((target_clones("avx2", "default")))
 #else

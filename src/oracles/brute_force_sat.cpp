@@ -56,8 +56,8 @@ struct PointColumns {
 // same sums as Eigen's cross() and norm() on Vec3, (x * x + y * y) + z * z,
 // so the same bits.
 MFZ_VECTOR_LANES void axes_of_row(const Vec3& ea, double length_a, const double* vx, const double* vy,
-                               const double* vz, const double* length_b, size_t row, double* nx, double* ny,
-                               double* nz) {
+                                  const double* vz, const double* length_b, size_t row, double* nx, double* ny,
+                                  double* nz) {
   const double ax = ea.x(), ay = ea.y(), az = ea.z();
   const double parallel = tol::kParallelEdges * length_a;
 #pragma omp simd
@@ -76,8 +76,8 @@ MFZ_VECTOR_LANES void axes_of_row(const Vec3& ea, double length_a, const double*
 
 // Every point projected onto a row of axes (columns nx, ny, nz): the least
 // and the greatest projection per axis.
-MFZ_VECTOR_LANES void project_row(const PointColumns& points, const double* nx, const double* ny, const double* nz,
-                               size_t row, double* lowest, double* highest) {
+MFZ_VECTOR_LANES void project_row(const PointColumns& points, const double* nx, const double* ny,
+                                  const double* nz, size_t row, double* lowest, double* highest) {
   for (size_t j = 0; j < row; ++j) lowest[j] = INFINITY, highest[j] = -INFINITY;
   const double *px = points.xyz.data(), *py = px + points.n, *pz = py + points.n;
   for (size_t i = 0; i < points.n; ++i) {
