@@ -3,8 +3,9 @@
 # libFuzzer targets and `manifuzz fuzz`), and clang++ with ASan + UBSan; then
 # ClusterFuzzLite's build.sh with ASan + UBSan, each target run for a few
 # seconds. Properties run a bounded number of cases here. The clang preset
-# leaves out the CLI and mutation tests, which the g++ build runs on the same
-# code (under the fuzzers' instrumentation they take five times as long);
+# leaves out the CLI, mutation and answer_fingerprint tests, which the g++
+# build runs on the same code (under the fuzzers' instrumentation they take
+# five times as long);
 # the sanitizer preset leaves out the mutants and the peers (not built there).
 set -euo pipefail
 cd "$(dirname "$0")/.."

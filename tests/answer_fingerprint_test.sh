@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# answer_fingerprint's verdicts and exit statuses: the same bytes (the
+# built-in in process against its own plugin) exit 0; another generator's
+# answers (the tutorial's unfixed method) exit 1 and name the first pair
+# that differs; a missing file, a library that is no generator, or no
+# argument exit 2 with a one-line error.
+#
+#   answer_fingerprint_test.sh FINGERPRINT PLUGINS_DIR
+set -uo pipefail
+fingerprint=$1 plugins=$2
+failures=0
+expect() {  # expect STATUS PATTERN -- ARGS...
+  local status=$1 pattern=$2
+  shift 3
+  local out
+  out=$("$fingerprint" "$@" 2>&1)
+  local got=$?
+  if [ "$got" -ne "$status" ] || ! grep -qE "$pattern" <<<"$out"; then
+    echo "FAIL: answer_fingerprint $* exited $got (want $status), output lacks /$pattern/:"
+    tail -3 <<<"$out"
+    failures=$((failures + 1))
+  fi
+}
+expect 0 '^0 of 14336 calls differ$' -- builtin "$plugins/libmanifuzz_clipping.so"
+expect 1 '^first difference: .*pair [0-9]+' -- "$plugins/libmanifuzz_clipping.so" "$plugins/libmanifuzz_tutorial.so"
+expect 2 'cannot load generator' -- "$plugins/no-such-generator.so"
+expect 2 'is not a manifuzz generator' -- "$plugins/libmfz_test_missing_symbol.so"
+expect 2 '^usage: answer_fingerprint' --
+[ "$failures" -eq 0 ] && echo "answer_fingerprint: all verdicts and statuses as expected"
+exit $((failures > 0))
