@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <vector>
+
+#include "geometry/closest_point.h"
 #include "geometry/hull_distance.h"
 #include "test_support.h"
 
@@ -28,6 +32,37 @@ TEST(SignedDistance, APointOnAFaceIsOnTheSurfaceWhenRoundingPutsItOutsideAFolded
   const Hull folded = *build_hull(points).hull;
   const Vec3 on_surface(-0.034176573742342953, 1000.0000000000863, -0.38336325324223708);
   EXPECT_LT(std::abs(signed_distance(folded, {}, on_surface)), 1e-9 * folded.diameter());
+}
+
+// The nearest face by brute force: minus the least depth under a plane
+// inside, the nearest polygon outside.
+double distance_by_every_face(const Hull& hull, const Vec3& p) {
+  double inside = -INFINITY, outside = INFINITY;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    std::vector<Vec3> loop;
+    for (int k = 0; k < hull.face_size(f); ++k) loop.push_back(hull.vertex(hull.face_vertex(f, k)));
+    inside = std::max(inside, hull.face_normal(f).dot(p) - hull.face_offset(f));
+    outside = std::min(outside, (closest_point_on_polygon(p, loop.data(), hull.face_size(f), hull.face_normal(f)) - p).norm());
+  }
+  return inside <= 0 ? inside : outside;
+}
+
+// signed_distance keeps 256 faces' heights and takes the others' again: on
+// a hull of 596 faces, points just inside and just outside the faces past
+// the 256th are as far as every face measured one by one says.
+TEST(SignedDistance, FacesPastTheKeptHeightsCountInsideAndOutside) {
+  const Hull ball = *build_hull(test::sphere_points(300, 7)).hull;
+  ASSERT_GT(ball.face_count(), 512);
+  for (int f = 256; f < ball.face_count(); f += 7) {
+    Vec3 centre = Vec3::Zero();
+    for (int k = 0; k < ball.face_size(f); ++k) centre += ball.vertex(ball.face_vertex(f, k));
+    centre /= ball.face_size(f);
+    for (const double off : {-1e-3, 1e-3}) {
+      const Vec3 p = centre + off * ball.face_normal(f);
+      EXPECT_NEAR(signed_distance(ball, {}, p), distance_by_every_face(ball, p), 1e-15) << "face " << f << ", " << off;
+      EXPECT_NEAR(signed_distance(ball, {}, p), off, 1e-12) << "face " << f;
+    }
+  }
 }
 
 }  // namespace

@@ -18,15 +18,26 @@ namespace mfz {
 // (manifuzz fuzz: a false on-surface of 0.3 on the built-in).
 double signed_distance(const Hull& hull, const Pose& pose, const Vec3& world_point) {
   const Vec3 p = pose.to_local_direction(world_point - pose.position);
+  // Each face's height over its plane is taken once, for all three passes
+  // (taken in each, it was three fifths of the function, which the on-surface
+  // and within-both-hulls checks made 7% of a fuzz execution); faces past
+  // the buffer take theirs again, to the same bits.
+  constexpr int kHeightsOnStack = 256;
+  double heights[kHeightsOnStack];
+  const auto plane_height = [&](int f) { return hull.face_normal(f).dot(p) - hull.face_offset(f); };
+  const auto height = [&](int f) { return f < kHeightsOnStack ? heights[f] : plane_height(f); };
   double outside_most = -std::numeric_limits<double>::infinity();
-  for (int f = 0; f < hull.face_count(); ++f)
-    outside_most = std::max(outside_most, hull.face_normal(f).dot(p) - hull.face_offset(f));
+  for (int f = 0; f < hull.face_count(); ++f) {
+    const double h = plane_height(f);
+    if (f < kHeightsOnStack) heights[f] = h;
+    outside_most = std::max(outside_most, h);
+  }
   if (outside_most <= 0) return outside_most;
   double nearest = std::numeric_limits<double>::infinity();
   Vec3 loop[kMaxLoopOnStack];
   for (const bool outside_pass : {true, false})
     for (int f = 0; f < hull.face_count(); ++f) {
-      const double plane = hull.face_normal(f).dot(p) - hull.face_offset(f);
+      const double plane = height(f);
       if (outside_pass ? plane <= 0 : (plane > 0 || -plane >= nearest)) continue;
       const int n = std::min(hull.face_size(f), kMaxLoopOnStack);
       for (int k = 0; k < n; ++k) loop[k] = hull.vertex(hull.face_vertex(f, k));
