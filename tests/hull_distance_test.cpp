@@ -65,5 +65,31 @@ TEST(SignedDistance, FacesPastTheKeptHeightsCountInsideAndOutside) {
   }
 }
 
+// Beyond its allowance signed_distance_past is signed_distance to the bit;
+// within it, no more than the allowance: around a 40-point ball, points
+// inside, on and outside at distances either side of each allowance.
+TEST(SignedDistance, PastAnAllowanceIsExactAndWithinItAtMostTheAllowance) {
+  const Hull ball = *build_hull(test::sphere_points(40, 3)).hull;
+  const Pose turned{Vec3(3, -1, 2), Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()))};
+  int beyond = 0, within = 0;
+  for (const Vec3& direction : test::sphere_points(200, 5))
+    for (const double radius : {0.5, 0.99, 1.0, 1.01, 1.1, 1.5, 3.0}) {
+      const Vec3 p = turned.to_world(radius * direction);
+      const double exact = signed_distance(ball, turned, p);
+      for (const double allowed : {0.0, 0.005, 0.05, 0.3, 1.0}) {
+        const double past = signed_distance_past(ball, turned, p, allowed);
+        if (exact > allowed) {
+          EXPECT_EQ(past, exact) << "radius " << radius << ", allowed " << allowed;
+          ++beyond;
+        } else {
+          EXPECT_LE(past, allowed) << "radius " << radius << ", allowed " << allowed;
+          ++within;
+        }
+      }
+    }
+  EXPECT_GT(beyond, 1000);
+  EXPECT_GT(within, 1000);
+}
+
 }  // namespace
 }  // namespace mfz

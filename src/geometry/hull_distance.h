@@ -11,4 +11,13 @@ namespace mfz {
 /// polygon).
 double signed_distance(const Hull& hull, const Pose& pose, const Vec3& world_point);
 
+/// signed_distance where it exceeds `allowed` (>= 0), to the bit; otherwise
+/// some value no more than `allowed`. For a check that asks how far a point
+/// lies beyond an allowance: a point outside the hull but within the
+/// allowance is answered by one face, not by every face nearer than its
+/// distance (contact points below a deep reference face, outside the other
+/// hull's sloping sides, made within-both-hulls 17% of the fuzzer's
+/// executions on its corpus, 3.6% after).
+double signed_distance_past(const Hull& hull, const Pose& pose, const Vec3& world_point, double allowed);
+
 }  // namespace mfz

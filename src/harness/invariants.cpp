@@ -223,9 +223,11 @@ InvariantCheck check_within_both_hulls(const Context& c) {
   const Scene& s = c.scene;
   return worst_contact(c, s.point_tolerance(), "outside allowed by", [&](int i) {
     const double slack = std::abs(c.m.contacts[i].penetration);
+    // Within the slack a point's distance is clamped to 0 below, so it need
+    // only be measured where it exceeds the slack.
     return std::max({c.own_distance_a(i), c.own_distance_b(i),
-                     signed_distance(s.hull_b, s.pose_b, c.on_a(i)) - slack,
-                     signed_distance(s.hull_a, s.pose_a, c.on_b(i)) - slack, 0.0});
+                     signed_distance_past(s.hull_b, s.pose_b, c.on_a(i), slack) - slack,
+                     signed_distance_past(s.hull_a, s.pose_a, c.on_b(i), slack) - slack, 0.0});
   });
 }
 
