@@ -12,6 +12,7 @@
 #include "geometry/tolerances.h"
 #include "oracles/libccd_oracle.h"
 #include "geometry/closest_point.h"
+#include "geometry/hull_distance.h"
 #include "oracles/hull_gap.h"
 #include "oracles/minkowski_difference.h"
 #include "families.h"
@@ -212,6 +213,84 @@ TEST(ContactRegion, ASheetWithinTheFirstTouchingSlabLiesAgainstBothHalvesOfAFold
   ASSERT_TRUE(region && !region->empty);
   EXPECT_EQ(region->facing_faces_b, 2);
   EXPECT_EQ(region->facing_faces_a, 1);
+}
+
+// The corners as contact_region first found them: every vertex and every
+// crossing of every edge with every plane, each held to the other hull
+// within the slack and the crossing to its own, none passed by.
+std::vector<Eigen::Vector2d> corners_crossing_every_plane(const Scene& s, const Vec3& n, const Vec3& shift_b,
+                                                         double slack) {
+  struct Side {
+    const Hull& hull;
+    const Pose& pose;
+    const std::vector<Vec3>& world;
+    Vec3 shift;
+    std::vector<Vec3> normals;
+    std::vector<double> offsets;
+    double height(size_t f, const Vec3& p) const { return normals[f].dot(p) - offsets[f]; }
+  };
+  Side a{s.hull_a, s.pose_a, s.world_a, Vec3::Zero(), {}, {}}, b{s.hull_b, s.pose_b, s.world_b, shift_b, {}, {}};
+  for (Side* side : {&a, &b})
+    for (int f = 0; f < side->hull.face_count(); ++f) {
+      const Vec3 normal = side->pose.rotate(side->hull.face_normal(f));
+      side->normals.push_back(normal);
+      side->offsets.push_back(normal.dot(side->pose.to_world(side->hull.vertex(side->hull.face_vertex(f, 0))) + side->shift));
+    }
+  const auto holds = [&](const Side& other, const Vec3& p, size_t on_plane) {
+    double outside = -INFINITY;
+    for (size_t f = 0; f < other.normals.size(); ++f)
+      if (f != on_plane) outside = std::max(outside, other.height(f, p));
+    return outside <= -slack ||
+           (outside <= slack && signed_distance(other.hull, other.pose, p - other.shift) <= slack);
+  };
+  std::vector<Vec3> corners;
+  for (const auto& [own, other] : {std::pair<const Side&, const Side&>{a, b}, {b, a}}) {
+    for (const Vec3& w : own.world)
+      if (holds(other, w + own.shift, SIZE_MAX)) corners.push_back(w + own.shift);
+    for (const HullEdge& e : own.hull.edges()) {
+      const Vec3 p = own.world[e.v0] + own.shift, q = own.world[e.v1] + own.shift;
+      for (size_t f = 0; f < other.normals.size(); ++f) {
+        const double dp = other.height(f, p), dq = other.height(f, q);
+        if ((dp > 0) == (dq > 0) || dp == dq) continue;
+        const Vec3 x = p + (dp / (dp - dq)) * (q - p);
+        bool inside_own = true;
+        for (size_t g = 0; g < own.normals.size(); ++g) inside_own = inside_own && own.height(g, x) <= slack;
+        if (holds(other, x, f) && inside_own) corners.push_back(x);
+      }
+    }
+  }
+  Vec3 u, v;
+  plane_basis(n, u, v);
+  std::vector<Eigen::Vector2d> projected;
+  for (const Vec3& c : corners) projected.emplace_back(u.dot(c), v.dot(c));
+  return convex_hull_2d(projected);
+}
+
+// contact_region passes by an edge beyond one plane of the other hull all
+// along; the corners are still those of every edge crossed with every
+// plane, to the bit. A box rests on another turned about n, its bottom
+// within the slack above the other's top, on it, or just into it (where
+// an edge within the slack beyond a plane still crosses the others), and
+// tilted through the top.
+TEST(ContactRegion, CornersAreThoseOfEveryEdgeCrossedWithEveryPlane) {
+  const double slack = 1e-6;
+  int compared = 0;
+  for (const double turn : {0.0, 0.3, 0.7854})
+    for (const double tilt : {0.0, 1e-7, 0.05})
+      for (const double lift : {-0.2, -2 * slack, -0.5 * slack, 0.0, 0.5 * slack, 0.9 * slack}) {
+        const Quat orientation = test::about(Vec3(1, 0.3, 0).normalized(), tilt) * test::about(Vec3(0, 0, 1), turn);
+        const Scene s = scene_of(test::make_case(box_points(1, 1, 1), {Vec3(0.1, -0.2, 0.3), Quat::Identity()},
+                                                 box_points(0.8, 0.6, 0.5),
+                                                 {Vec3(0.5, 0.2, 0.3 + 1.5 + lift), orientation}));
+        const Vec3 n(0, 0, 1);
+        const ContactRegion region = contact_region(s, n, Vec3::Zero(), slack);
+        const std::vector<Eigen::Vector2d> expected = corners_crossing_every_plane(s, n, Vec3::Zero(), slack);
+        ASSERT_EQ(region.corners.size(), expected.size()) << "turn " << turn << ", tilt " << tilt << ", lift " << lift;
+        for (size_t i = 0; i < expected.size(); ++i)
+          EXPECT_TRUE(region.corners[i] == expected[i]) << "turn " << turn << ", tilt " << tilt << ", lift " << lift;
+        compared += !expected.empty();
+      }
+  EXPECT_GT(compared, 30);
 }
 
 TEST(LibccdOracle, EpaDirectionIsTheWayToMoveB) {
