@@ -48,15 +48,17 @@ double distance_to_surface(const Hull& hull, const Pose& pose, const Vec3& world
     for (int k = 0; k < n; ++k) loop[k] = hull.vertex(hull.face_vertex(f, k));
     return (closest_point_on_polygon(p, loop, n, hull.face_normal(f)) - p).norm();
   };
-  if (enough >= 0) {
-    const double within = polygon_distance(highest_over);
-    if (within <= enough) return within;
-  }
+  // The face asked first is not asked again: the minimum is the same.
   double nearest = std::numeric_limits<double>::infinity();
+  const int asked_first = enough >= 0 ? highest_over : -1;
+  if (asked_first >= 0) {
+    nearest = polygon_distance(asked_first);
+    if (nearest <= enough) return nearest;
+  }
   for (const bool outside_pass : {true, false}) {
     for (int f = 0; f < hull.face_count(); ++f) {
       const double plane = height(f);
-      if (outside_pass ? plane <= 0 : (plane > 0 || -plane >= nearest)) continue;
+      if (f == asked_first || (outside_pass ? plane <= 0 : (plane > 0 || -plane >= nearest))) continue;
       nearest = std::min(nearest, polygon_distance(f));
     }
     if (outside_pass && nearest <= enough) return nearest;

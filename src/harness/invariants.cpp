@@ -393,13 +393,6 @@ CentroidMiss centroid_miss(const Context& c, const ContactRegion& region, double
   return miss;
 }
 
-// How far a hull's posed vertices reach along unit `n`, top to bottom.
-double extent_along(const std::vector<Vec3>& world, const Vec3& n) {
-  double low = INFINITY, high = -INFINITY;
-  for (const Vec3& p : world) low = std::min(low, n.dot(p)), high = std::max(high, n.dot(p));
-  return high - low;
-}
-
 // Completeness: where the region is well defined, the contacts projected
 // onto the contact plane enclose its centroid. The region is the part of the
 // hulls' intersection that touched first (oracles/contact_region.h). It is
@@ -437,7 +430,10 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   // A tetrahedral sliver 5 thick, 2005 deep inside a hull, had its outline
   // asked of the contacts under its reference face, which covers half of it
   // (0.125 off, tolerance 0.024; h15, manifuzz fuzz).
-  if ((1 - halfway) * depth >= std::min(extent_along(c.scene.world_a, n), extent_along(c.scene.world_b, n)))
+  // A hull's overlap with itself along n is its thickness.
+  const double thinner = std::min(directed_overlap(c.scene.world_a, c.scene.world_a, n),
+                                  directed_overlap(c.scene.world_b, c.scene.world_b, n));
+  if ((1 - halfway) * depth >= thinner)
     return skipped("a hull is thinner along n than the first-touching slab: the region is its outline");
   const ContactRegion region = contact_region(c.scene, n, first * depth * n, slack);
   if (region.empty || !(depth <= tol::kThinRegion * region.width))
