@@ -413,4 +413,12 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
 SatResult run_sat(const PosedHull& a, const PosedHull& b) { return bounded_sat(a, b); }
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_every_pair(a, b); }
 
+SatResult least_edge_axis(const PosedHull& a, const PosedHull& b) {
+  SatResult best;
+  best.depth = std::numeric_limits<double>::infinity();
+  best.kind = AxisKind::edge_edge;  // edge after edge: no bias
+  all_edge_pairs(a, b, best);
+  return best;
+}
+
 }  // namespace mfz

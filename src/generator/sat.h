@@ -38,5 +38,9 @@ SatResult run_sat(const PosedHull& a, const PosedHull& b);
 /// Every axis measured in full and every edge pair tried: what the pruning
 /// and the bounds must agree with.
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b);
+/// The edge pair of least overlap, every pair tried, without F3's bias
+/// towards faces: the axis a face axis beat by less than the bias (F39).
+/// `depth` is infinite when no pair spans an axis.
+SatResult least_edge_axis(const PosedHull& a, const PosedHull& b);
 
 }  // namespace mfz
