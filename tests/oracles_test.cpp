@@ -15,6 +15,7 @@
 #include "geometry/hull_distance.h"
 #include "oracles/hull_gap.h"
 #include "oracles/minkowski_difference.h"
+#include "oracles/ties.h"
 #include "families.h"
 #include "test_support.h"
 
@@ -176,6 +177,43 @@ TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
   ASSERT_EQ(axes[0].kind, AxisKind::edge_edge);
   EXPECT_LE(axes[0].reverse_overlap - axes[0].overlap, s.length_tolerance(1e-9));
   EXPECT_TRUE(has_axis_tie(axes, s.length_tolerance(1e-9)));
+}
+
+// Under face-bias a generator may answer along a face axis that is not the
+// least; the ties that leave its contacts open are those along that axis.
+// In the face-bias variant's case the least axis is an edge pair with no
+// tie, and the face axis 5% deeper has a face of each hull along it.
+TEST(Ties, AlongAFaceAxisThatIsNotTheLeastAFaceOfEachHullTies) {
+  const CaseParse parsed = read_case_file(
+      test::corpus_path("variants/face-bias-a-face-of-each-hull-ties-along-a-face-axis-that-is-not-the-least.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = scene_of(*parsed.value);
+  const auto axes = rank_sat_axes(s);
+  const double tie = s.length_tolerance(tol::kTie);
+  ASSERT_EQ(axes[0].kind, AxisKind::edge_edge);
+  EXPECT_FALSE(classify_ties(s, axes, tie).contacts_open());
+  const RankedAxis* face = nullptr;
+  for (const RankedAxis& axis : axes)
+    if (axis.kind != AxisKind::edge_edge && (!face || axis.overlap < face->overlap)) face = &axis;
+  ASSERT_NE(face, nullptr);
+  ASSERT_LE(face->overlap, 1.05 * axes[0].overlap);
+  const Ties along = classify_ties_along(s, axes, face->normal, tie);
+  EXPECT_FALSE(along.direction);
+  EXPECT_TRUE(along.feature);
+}
+
+// A box turned about two axes and pressed corner first into a slab: along
+// the slab's top face nothing ties, and a direction along no face leaves
+// only the depth determined.
+TEST(Ties, AlongAFaceAxisWithNoFaceOfTheOtherHullNothingTies) {
+  const Scene s = scene_of(test::make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                           {Vec3(0.1, 0.2, 1.1), test::about(Vec3(1, 0, 0), 0.3) *
+                                                                     test::about(Vec3(0, 1, 0), 0.2)}));
+  const auto axes = rank_sat_axes(s);
+  const double tie = s.length_tolerance(tol::kTie);
+  const Ties along = classify_ties_along(s, axes, Vec3(0, 0, 1), tie);
+  EXPECT_FALSE(along.any());
+  EXPECT_TRUE(classify_ties_along(s, axes, Vec3(1, 1, 1).normalized(), tie).direction);
 }
 
 // A sheet whose two sides meet at 1.3e-8 rad pokes its corner 2.02 into a

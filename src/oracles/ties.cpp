@@ -89,4 +89,24 @@ Ties classify_ties(const Scene& s, const std::vector<RankedAxis>& ranked, double
   return ties;
 }
 
+Ties classify_ties_along(const Scene& s, const std::vector<RankedAxis>& ranked, const Vec3& normal, double tie) {
+  const RankedAxis* along = nullptr;
+  for (const RankedAxis& axis : ranked)
+    if (axis.kind != AxisKind::edge_edge && coplanar_normals(axis.normal, normal) &&
+        (!along || axis.overlap < along->overlap))
+      along = &axis;
+  if (!along) {
+    Ties open;
+    open.direction = true;
+    return open;
+  }
+  // The ranking is sorted only near the least axis: every axis is read.
+  std::vector<RankedAxis> near{*along};
+  for (const RankedAxis& axis : ranked)
+    if (&axis != along && std::abs(axis.overlap - along->overlap) <= tie) near.push_back(axis);
+  std::sort(near.begin() + 1, near.end(),
+            [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; });
+  return classify_ties(s, near, tie);
+}
+
 }  // namespace mfz

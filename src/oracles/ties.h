@@ -46,4 +46,11 @@ struct Ties {
 /// tol::kSupportWindow L plus the world frame's rounding.
 Ties classify_ties(const Scene& scene, const std::vector<RankedAxis>& ranked, double tie);
 
+/// The ties along `normal`, a face axis a face-bias profile let the
+/// generator take though it is not the least: the candidates along it and
+/// within `tie` of its overlap, as classify_ties reads them about the least
+/// axis. Shallower axes are choices the generator did not make. Where no
+/// face axis lies along `normal`, only depth is determined (`direction`).
+Ties classify_ties_along(const Scene& scene, const std::vector<RankedAxis>& ranked, const Vec3& normal, double tie);
+
 }  // namespace mfz
