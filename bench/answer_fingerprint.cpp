@@ -2,7 +2,8 @@
 // the generator benchmark's families, in both orders (A, B and B, A), through
 // each plugin named, and per family a SHA-256 of the answers' bytes (the
 // verdict, the normal, the penetration, and each contact in order). With two
-// plugins it also counts the calls whose answers differ and shows the first.
+// plugins it also counts the calls whose answers differ, shows the first,
+// and how far the answers moved (points, depth, normal; Change below).
 // A speed change that claims to keep every answer is checked with it against
 // the plugin built before the change, on the same pairs the timings use.
 //
@@ -12,6 +13,8 @@
 // two plugins differ, 2 on bad arguments or a library that is no generator.
 #include <openssl/evp.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -45,13 +48,41 @@ std::vector<unsigned char> answer_bytes(int32_t status, const mfz_manifold& m) {
   return bytes;
 }
 
-std::vector<unsigned char> answer(const Generator& g, const Scene& s, bool swapped) {
+struct Answer {
+  int32_t status = 0;
+  mfz_manifold manifold{};
+  std::vector<unsigned char> bytes;
+};
+
+Answer answer(const Generator& g, const Scene& s, bool swapped) {
   const mfz_hull a = s.hull_a.view(), b = s.hull_b.view();
   const mfz_pose pa = s.abi_pose_a(), pb = s.abi_pose_b();
-  mfz_manifold out;
-  const int32_t status = swapped ? g.generate(b, pb, a, pa, out) : g.generate(a, pa, b, pb, out);
-  return answer_bytes(status, out);
+  Answer out;
+  out.status = swapped ? g.generate(b, pb, a, pa, out.manifold) : g.generate(a, pa, b, pb, out.manifold);
+  out.bytes = answer_bytes(out.status, out.manifold);
+  return out;
 }
+
+// How far two answers of one call are apart, where they have the same shape
+// (status, verdict and contact count): the largest move of a contact point
+// and of the depth, in units of the case's L, and of the normal. A change
+// that fixes rounding moves them by rounding; `shape` counts the rest.
+struct Change {
+  double point = 0, depth = 0, normal = 0;
+  long long shape = 0;
+  void add(const Answer& x, const Answer& y, double scale) {
+    const mfz_manifold &m = x.manifold, &n = y.manifold;
+    if (x.status != y.status || x.status != 0 || m.colliding != n.colliding || m.contact_count != n.contact_count) {
+      ++shape;
+      return;
+    }
+    normal = std::max(normal, (to_vec(m.normal) - to_vec(n.normal)).norm());
+    depth = std::max(depth, std::abs(m.penetration - n.penetration) / scale);
+    for (int i = 0; i < m.contact_count && i < MFZ_MAX_CONTACTS; ++i)
+      point = std::max({point, (to_vec(m.contacts[i].point_on_a) - to_vec(n.contacts[i].point_on_a)).norm() / scale,
+                        (to_vec(m.contacts[i].point_on_b) - to_vec(n.contacts[i].point_on_b)).norm() / scale});
+  }
+};
 
 struct Digest {
   std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context{EVP_MD_CTX_new(), EVP_MD_CTX_free};
@@ -88,18 +119,25 @@ int run(int argc, char** argv) {
   for (const bench::BenchFamily& family : bench::bench_families()) {
     Digest digest;
     long long family_differing = 0;
+    Change change;
     for (size_t i = 0; i < family.scenes.size(); ++i)
       for (const bool swapped : {false, true}) {
-        const std::vector<unsigned char> bytes = answer(*plugin, family.scenes[i], swapped);
-        digest.add(bytes);
+        const Answer mine = answer(*plugin, family.scenes[i], swapped);
+        digest.add(mine.bytes);
         ++calls;
-        if (!baseline || answer(*baseline, family.scenes[i], swapped) == bytes) continue;
+        if (!baseline) continue;
+        const Answer before = answer(*baseline, family.scenes[i], swapped);
+        if (before.bytes == mine.bytes) continue;
         if (differing == 0)
           std::printf("first difference: %s, pair %zu%s\n", family.name.c_str(), i, swapped ? " (B, A)" : "");
         ++differing, ++family_differing;
+        change.add(mine, before, family.scenes[i].scale);
       }
     std::printf("%-20s %s", family.name.c_str(), digest.hex().c_str());
     if (baseline) std::printf("  %lld of %zu calls differ", family_differing, 2 * family.scenes.size());
+    if (family_differing > 0)
+      std::printf(" (points moved up to %.3g L, depth %.3g L, normal %.3g; %lld of another shape)", change.point,
+                  change.depth, change.normal, change.shape);
     std::printf("\n");
   }
   if (baseline) std::printf("%lld of %lld calls differ\n", differing, calls);

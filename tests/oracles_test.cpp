@@ -127,6 +127,25 @@ TEST(ClosestBetweenSegments, ParallelAndSkewAndDegenerate) {
   EXPECT_VEC_NEAR(q, Vec3(0, 2, 0), 1e-15);
 }
 
+// Two edges 4000 long, 1e-6 rad apart, one 1 above the other: where they
+// cross along the common normal is set by the geometry to the inputs'
+// rounding over the sine (about 1e-6 here). The textbook denominator
+// a e - b^2 cancels to eps over the sine squared and put the point 1.95 off
+// at 1e-7 rad; the cross products keep it to eps over the sine (F40).
+TEST(ClosestBetweenSegments, NearlyParallelEdgesCrossWhereTheGeometrySays) {
+  for (const double angle : {1e-4, 1e-6, 1e-7}) {
+    const Vec3 half(2000 * std::cos(angle), 2000 * std::sin(angle), 0);
+    const Vec3 middle(2000, 0, 1);
+    Vec3 p, q;
+    closest_between_segments(Vec3(0, 0, 0), Vec3(4000, 0, 0), middle - half, middle + half, p, q);
+    EXPECT_NEAR(p.x(), 2000, 1e-5) << "at " << angle << " rad";
+    EXPECT_NEAR(q.x(), 2000, 1e-5) << "at " << angle << " rad";
+    EXPECT_NEAR(q.z() - p.z(), 1, 1e-12);
+    closest_between_segments(middle - half, middle + half, Vec3(0, 0, 0), Vec3(4000, 0, 0), q, p);
+    EXPECT_NEAR(p.x(), 2000, 1e-5) << "swapped, at " << angle << " rad";
+  }
+}
+
 TEST(MinkowskiOracle, MovingBByTheDepthAlongTheNormalLeavesThemTouching) {
   const Scene s = box_on_slab();
   std::string error;
