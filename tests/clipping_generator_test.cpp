@@ -277,5 +277,25 @@ TEST(ClippingGenerator, AFaceWinsAnEdgePairInItsPlaneByTheRoundingOfTheVerticesN
   EXPECT_GT(span, 1e14) << "the contacts lie together: an edge pair's point, not the sliver's face";
 }
 
+// F41: a needle 0.5 long lies on the top face of a slab 5e-4 thick. An
+// edge pair 4.6e-12 rad off the face normal comes out 9e-13 shallower than
+// the face; F3's bias is a fraction of the hulls' size, so the face wins
+// and its clip gives the needle's two points on the face, not the pair's
+// one point at the face's edge.
+TEST(ClippingGenerator, AFaceWinsAnEdgePairByTheBiasOfTheHullsSizeNotOfTheirThicknessAlongIt) {
+  const CaseParse parsed = read_case_file(test::corpus_path(
+      "regressions/f41-a-needle-on-a-slab-5e-4-thick-took-an-edge-axis-tilted-4-6e-12-from-its-face.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = *make_scene(*parsed.value).scene;
+  const mfz_hull a = s.hull_a.view(), b = s.hull_b.view();
+  const PosedHull posed_a(a, s.pose_a), posed_b(b, s.pose_b);
+  const SatResult sat = run_sat(posed_a, posed_b);
+  EXPECT_EQ(sat.kind, AxisKind::face_a);
+  mfz_manifold m{};
+  ASSERT_EQ(generate_clipping_manifold(a, s.abi_pose_a(), b, s.abi_pose_b(), m), 0);
+  ASSERT_EQ(m.contact_count, 2);
+  EXPECT_GT((to_vec(m.contacts[0].point_on_a) - to_vec(m.contacts[1].point_on_a)).norm(), 0.29);
+}
+
 }  // namespace
 }  // namespace mfz

@@ -29,10 +29,12 @@ double face_area_of(const PosedHull& a, const PosedHull& b, const SatResult& axi
   return axis.kind == AxisKind::face_a ? patch_area(a, axis.feature_a) : patch_area(b, axis.feature_b);
 }
 
-// Faces of the two hulls along one direction with overlaps within `slack`.
-bool parallel_face_tie(const PosedHull&, const PosedHull&, const SatResult& x, const SatResult& y, double slack) {
+// Faces of the two hulls along one direction with overlaps within the
+// slack, which is asked for only when both are faces.
+template <class Slack>
+bool parallel_face_tie(const SatResult& x, const SatResult& y, Slack&& slack) {
   const bool faces = x.kind != AxisKind::edge_edge && y.kind != AxisKind::edge_edge && x.kind != y.kind;
-  return faces && std::abs(x.depth - y.depth) <= slack && coplanar_normals(x.normal, y.normal);
+  return faces && coplanar_normals(x.normal, y.normal) && std::abs(x.depth - y.depth) <= slack();
 }
 
 // Tries one candidate axis (unit length). Returns false when it separates.
@@ -62,20 +64,31 @@ bool consider_projected(const PosedHull& a, const PosedHull& b, const Interval& 
   // lying in a sliver's face and a face of B came out 16 shallower than
   // that face in a turned frame, and its one point replaced the sliver's
   // contacts 2e14 long (F38, rigid-motion, manifuzz fuzz after F37).
-  const double world = std::max(a.reach_from_origin(), b.reach_from_origin());
-  const double slack = tol::kEdgeAxisBias * std::max(ia.max - ia.min, ib.max - ib.min) +
-                       tol::world_rounding(world);
+  //
+  // The bias is a fraction of the hulls' size, not only of their extent
+  // along the axis: an edge axis tilted 4.6e-12 rad from the face normal of
+  // a slab 5e-4 thick, across a needle 0.5 long lying on that face, came
+  // out 9e-13 shallower than the face, past a bias of 1e-9 of the 5e-4
+  // extent, and its one point stood for an edge lying on the face, 0.15
+  // from the middle of the 0.3 it touched (spans-contact-region, manifuzz
+  // check --strict --seed 2026112611, F41). The span is at most twice a
+  // hull's reach, inside the bounded SAT's room for ties.
+  // Measured only where a tie is asked about.
+  const auto slack = [&] {
+    const double world = std::max(a.reach_from_origin(), b.reach_from_origin());
+    const double size = std::max({ia.max - ia.min, ib.max - ib.min, a.span(), b.span()});
+    return tol::kEdgeAxisBias * size + tol::world_rounding(world);
+  };
   const bool edge_after_face = kind == AxisKind::edge_edge && best.kind != AxisKind::edge_edge;
   const Vec3 normal = b_along_axis ? axis : Vec3(-axis);
   const SatResult candidate{false, normal, overlap, kind, fa, fb};
-  if (overlap < best.depth - (edge_after_face ? slack : 0.0)) {
+  if (overlap < best.depth - (edge_after_face ? slack() : 0.0)) {
     // F14: a face that ties with a parallel face of the other hull only
     // rounds below it; the larger face stays the reference, whatever the
     // order of the hulls or the motion.
-    if (!(parallel_face_tie(a, b, candidate, best, slack) && face_area_of(a, b, candidate) <= face_area_of(a, b, best)))
+    if (!(parallel_face_tie(candidate, best, slack) && face_area_of(a, b, candidate) <= face_area_of(a, b, best)))
       best = candidate;
-  } else if (parallel_face_tie(a, b, candidate, best, slack) &&
-             face_area_of(a, b, candidate) > face_area_of(a, b, best)) {
+  } else if (parallel_face_tie(candidate, best, slack) && face_area_of(a, b, candidate) > face_area_of(a, b, best)) {
     best = candidate;
   }
   return true;

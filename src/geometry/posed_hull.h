@@ -101,6 +101,20 @@ class PosedHull {
     return reach_from_origin_;
   }
 
+  /// The largest distance of a vertex from vertex 0, in the hull's own
+  /// frame: a size no pose changes, between half the diameter and the
+  /// diameter, however thin the hull is along any one axis. Measured on
+  /// first use.
+  double span() const {
+    if (!(span_ >= 0)) {
+      double largest = 0;
+      const Vec3 first = local_vertex(0);
+      for (int i = 1; i < hull_.vertex_count; ++i) largest = std::max(largest, (local_vertex(i) - first).squaredNorm());
+      span_ = std::sqrt(largest);
+    }
+    return span_;
+  }
+
   /// Projection of the hull onto a world direction (need not be unit).
   Interval project(const Vec3& world_axis) const {
     if (cached_) {
@@ -221,6 +235,7 @@ class PosedHull {
   mutable const HullTopology* topology_ = nullptr;
   mutable bool topology_looked_up_ = false;
   mutable double reach_from_origin_ = -1;
+  mutable double span_ = -1;
   Vec3 world_[kCachedVertices];
   double xs_[kCachedVertices], ys_[kCachedVertices], zs_[kCachedVertices];
 };

@@ -174,8 +174,9 @@ inline constexpr double kCoplanarSine = 1e-11;
 /// and would come and go with the frame (rigid-motion, --strict --seed 102).
 inline constexpr double kFacingCosine = 1e-9;
 /// Generator: an edge-edge axis replaces the best face axis only when its
-/// overlap is smaller by more than this fraction of the hulls' extent along
-/// it, so that a tie (to rounding) keeps the face contact and its polygon.
+/// overlap is smaller by more than this fraction of the hulls' size (their
+/// extent along it, or their span where larger: F41), so that a tie (to
+/// rounding) keeps the face contact and its polygon.
 inline constexpr double kEdgeAxisBias = 1e-9;
 /// Generator: the Gauss-map test that prunes edge pairs (edge_arcs.h) drops
 /// a pair only when its sign products miss by more than this. They are
