@@ -271,6 +271,42 @@ void least_edge_axis_contact(const PosedHull& a, const PosedHull& b, const SatRe
   if (trace) trace->sat = edge, trace->edge_contact = true;
 }
 
+// O10: several edge pairs can tie for the axis, a few 1e-8 rad apart (the
+// two edges of a sliver side, 2e-8 rad apart, against one long edge), and
+// rounding picks one; along it the sliver's corner may stand above the
+// edge the other hull's edge crosses, so no supporting pair crosses. Each
+// edge pair within F3's bias of the depth is then tried, in the hulls'
+// order, and the first whose supporting edges cross answers with its axis:
+// clipping faces on an edge axis puts points off the surfaces (F3). The
+// path runs only where the supporting edges failed.
+bool tied_edge_axis_contact(const PosedHull& a, const PosedHull& b, const SatResult& sat, mfz_manifold& out,
+                            ClipTrace* trace, const ClippingSteps& steps) {
+  const double slack = tol::kEdgeAxisBias * std::max(a.span(), b.span()) +
+                       tol::world_rounding(std::max(a.reach_from_origin(), b.reach_from_origin()));
+  bool found = false;
+  a.for_each_edge([&](int ea, int a0, int a1, int face_a) {
+    if (a.is_flat_edge(a0, a1, face_a)) return true;
+    const Vec3 edge_a = a.world_vertex(a1) - a.world_vertex(a0);
+    b.for_each_edge([&](int eb, int b0, int b1, int face_b) {
+      if (b.is_flat_edge(b0, b1, face_b)) return true;
+      const Vec3 edge_b = b.world_vertex(b1) - b.world_vertex(b0);
+      const Vec3 axis = edge_a.cross(edge_b);
+      const double length = axis.norm();
+      if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+      bool b_along_axis = true;
+      const double overlap = overlap_along(a, b, axis / length, b_along_axis);
+      if (!(overlap > 0) || !(overlap <= sat.depth + slack)) return true;
+      const SatResult tied{false, (b_along_axis ? axis : Vec3(-axis)) / length, overlap, AxisKind::edge_edge, ea, eb};
+      found = steps.edge_contact(a, b, tied, out);
+      if (found) out.normal = to_abi(tied.normal), out.penetration = -overlap;
+      if (found && trace) trace->sat = tied;
+      return !found;
+    });
+    return !found;
+  });
+  return found;
+}
+
 int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_hull& hull_b, const Pose& pose_b,
                           double world_resolution, mfz_manifold& out, ClipTrace* trace, const ClippingSteps& steps) {
   const PosedHull a(hull_a, pose_a), b(hull_b, pose_b);
@@ -282,7 +318,8 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   out.penetration = sat.separated ? 0.0 : -sat.depth;
   if (sat.separated || !(out.penetration < 0)) return 0;
   const Vec3 n = sat.normal;
-  if (sat.kind == AxisKind::edge_edge && steps.edge_contact(a, b, sat, out)) {
+  if (sat.kind == AxisKind::edge_edge &&
+      (steps.edge_contact(a, b, sat, out) || tied_edge_axis_contact(a, b, sat, out, trace, steps))) {
     if (trace) trace->edge_contact = true;
     return 0;
   }
