@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "case/case_file.h"
 #include "case/scene.h"
+#include "generator/coplanar_patch.h"
+#include "geometry/hull.h"
 #include "test_support.h"
 
 namespace mfz {
@@ -249,6 +252,38 @@ TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachC
     ASSERT_GT(kept.size(), 4) << corners << " corners: the square is clipped";
     for (int k = 0; k < kept.size(); ++k) EXPECT_EQ(kept[k], computed[k]) << corners << " corners, point " << k;
   }
+}
+
+// The other faces below the reference plane (F27) that lie wholly beside
+// one side of the prism are passed over before their patch is gathered.
+// Through a face_polygon step that is not the built-in's own, the shortcut
+// stands aside and every face is clipped: each answer must be the same
+// bytes. Deep pairs of 32- and 128-point hulls, where most of the near
+// half of the incident hull reaches below a small reference face, and
+// boxes, whose sides stand beside it.
+TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContactsOfClippingThem) {
+  ClippingSteps every_face;
+  every_face.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  const ClippingSteps builtin;
+  int contacts = 0;
+  for (const int points : {32, 128}) {
+    const Hull a = *build_hull(test::sphere_points(points, 5u * points)).hull;
+    const Hull b = *build_hull(test::sphere_points(points, 9u * points)).hull;
+    const mfz_hull va = a.view(), vb = b.view();
+    for (int k = 0; k < 40; ++k) {
+      const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
+      const Vec3 at = 0.6 * Vec3(std::cos(0.7 * k), std::sin(1.3 * k), std::cos(2.9 * k));
+      const mfz_pose pb = Pose{at, test::about(Vec3(1, 2, 3 + k), 0.37 * k)}.to_abi();
+      mfz_manifold passed_over{}, clipped{};
+      ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, passed_over, nullptr, builtin), 0);
+      ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, clipped, nullptr, every_face), 0);
+      ASSERT_EQ(passed_over.contact_count, clipped.contact_count) << points << " points, pose " << k;
+      EXPECT_EQ(std::memcmp(passed_over.contacts, clipped.contacts, sizeof(mfz_contact) * clipped.contact_count), 0)
+          << points << " points, pose " << k;
+      contacts += clipped.contact_count;
+    }
+  }
+  EXPECT_GT(contacts, 200);
 }
 
 // A sliver face of A 2e14 long, parallel to a face of B, whose hull reaches

@@ -59,6 +59,41 @@ void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
   trace->steps.push_back(std::move(step));
 }
 
+// Whether face f of the incident hull clips to nothing against the kept
+// sides of the reference prism, decided before its patch is gathered: its
+// own loop lies wholly outside one side, beyond the clip's band for those
+// points (side_bands), and no neighbour is coplanar, so that its loop is
+// the polygon coplanar_patch would give. The same points against the same
+// planes, with a band no narrower: clip_to_plane would keep none. F27's
+// faces are most of a large hull's near half, and nearly all lie beside a
+// small reference face (a 128-point pair clipped 100 faces a call for a
+// handful of points, 15% of the call). A face of a larger patch is clipped as before even so: the
+// patch's points inside the prism lie in its other faces, which would give
+// them too, but starting from another corner, in another order.
+bool lone_face_clips_to_nothing(const PosedHull& incident, int f, const ClipFace& reference,
+                                double reference_largest) {
+  const PrismSides* sides = reference.sides;
+  if (!sides || sides->count == 0) return false;
+  const int n = incident.face_size(f);
+  // The hull's reach bounds its loop's largest coordinate: a band at least
+  // the clip's, so that a face outside it is outside the clip's.
+  const double on_plane = tol::world_rounding(std::max(reference_largest, incident.reach_from_origin()));
+  bool outside = false;
+  for (int s = 0; s < sides->count && !outside; ++s) {
+    if (!sides->spans[s]) continue;
+    outside = true;
+    for (int k = 0; k < n && outside; ++k)
+      outside = sides->plane[s].signed_distance(incident.world_face_point(f, k)) > on_plane;
+  }
+  if (!outside) return false;
+  const Vec3 normal = incident.world_face_normal(f);
+  for (int k = 0; k < n; ++k) {
+    const int g = incident.face_across_step(f, k);
+    if (g >= 0 && coplanar_normals(incident.world_face_normal(g), normal)) return false;
+  }
+  return true;
+}
+
 // F27: the other faces of the incident hull that face the reference face and
 // reach below its plane, each clipped as the incident face is; their points
 // are added to `clipped` (each once). True when one was added.
@@ -78,6 +113,10 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   double perimeter = 0;
   for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
   const double column = tol::kTie * perimeter;
+  const double reference_largest = largest_coordinate(loop);
+  // The shortcut stands for the built-in's own steps only: a mutant's
+  // patch or clip is run as it is.
+  const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
   ClipPolygon polygon;
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
@@ -86,6 +125,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     for (int k = 0; k < incident.face_size(f) && !reaches_below; ++k)
       reaches_below = reference_plane.signed_distance(incident.world_face_point(f, k)) < 0;
     if (!reaches_below) continue;
+    if (builtin_clip && lone_face_clips_to_nothing(incident, f, reference, reference_largest)) continue;
     steps.face_polygon(incident, f, polygon);
     if (polygon.size() + reference.polygon->size() >= kMaxPolygonVertices) continue;
     if (!steps.clip_to_sides(reference, polygon, nullptr)) continue;
