@@ -122,6 +122,36 @@ TEST(EdgeArcs, TheCrossingArcsHoldEveryPairTheGaussMapTestKeeps) {
   EXPECT_LE(crossing, kept + kept / 100) << "the lanes keep pairs the test drops";
 }
 
+// SAT tests each row against the arcs of B its bounds leave in, kept apart
+// as columns: the row finds the same arcs of B among them as among all of
+// B's, less the ones left out, each under its own index, in order.
+TEST(EdgeArcs, ARowAmongKeptArcsFindsWhatItFindsAmongAllLessThoseLeftOut) {
+  const Hull a = *build_hull(test::sphere_points(32, 224u)).hull, b = *build_hull(test::sphere_points(32, 352u)).hull;
+  const mfz_hull va = a.view(), vb = b.view();
+  const PosedHull posed_a(va, {Vec3::Zero(), Quat::Identity()});
+  const PosedHull posed_b(vb, {Vec3(0, 0, 1.2), test::about(Vec3(1, 2, 3), 0.7)});
+  const EdgeArcs arcs_a(posed_a), arcs_b(posed_b);
+  ASSERT_TRUE(arcs_a.complete() && arcs_b.complete());
+  bool left_out[kMaxArcs];
+  for (int j = 0; j < arcs_b.size(); ++j) left_out[j] = j % 3 == 1;
+  static ArcColumns kept_columns;
+  int index[kMaxArcs];
+  const int kept = keep_arcs(arcs_b.columns(), arcs_b.size(), left_out, kept_columns, index);
+  EXPECT_EQ(kept, arcs_b.size() - arcs_b.size() / 3 - (arcs_b.size() % 3 == 2 ? 1 : 0));
+  long found = 0;
+  for (int i = 0; i < arcs_a.size(); ++i) {
+    int all[kMaxArcs], among[kMaxArcs];
+    const int count = arcs_b.crossing(arcs_a[i], all);
+    const int count_among = crossing_among(kept_columns, kept, index, arcs_a[i], among);
+    std::vector<int> expected;
+    for (int k = 0; k < count; ++k)
+      if (!left_out[all[k]]) expected.push_back(all[k]);
+    ASSERT_EQ(std::vector<int>(among, among + count_among), expected) << "row " << i;
+    found += count_among;
+  }
+  EXPECT_GT(found, 0);
+}
+
 // world_extent: the largest world coordinate, whose ulps bound the rounding;
 // touching: the contract's touching tolerance for the case (1e-9 L + ulps).
 void expect_same_answer(const SatResult& pruned, const SatResult& every, double world_extent, double touching) {

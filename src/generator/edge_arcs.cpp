@@ -92,15 +92,14 @@ MFZ_VECTOR_LANES void crossing_flags(const ArcColumns& k, int count, const EdgeA
   }
 }
 
-}  // namespace
-
-int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
+// The flags of crossing_flags, gathered into indices: of B's own arcs
+// (`index` null), or of those keep_arcs kept.
+int gather_crossing(const ArcColumns& columns, int count, const int* index, const EdgeArc& arc_a, int* out) {
   // The ends are unit vectors and so is |across| at most: each dot product
   // is within a few ulps of the test's own, and so is their product.
   constexpr double kLaneRounding = 1e-13;
-  const int count = count_;
   int64_t flags[kMaxArcs + 4];
-  crossing_flags(columns_, count, arc_a, tol::kGaussArcSlack + kLaneRounding, flags);
+  crossing_flags(columns, count, arc_a, tol::kGaussArcSlack + kLaneRounding, flags);
   std::fill(flags + count, flags + count + 4, 0);
   // Four arcs at a time: a row crosses a few of B's arcs, so most fours
   // have none. Taking every arc in turn, without a branch, was half the
@@ -108,9 +107,32 @@ int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
   int found = 0;
   for (int block = 0; block < count; block += 4) {
     if ((flags[block] | flags[block + 1] | flags[block + 2] | flags[block + 3]) == 0) continue;
-    for (int j = block; j < block + 4; ++j) out[found] = j, found += static_cast<int>(flags[j]);
+    for (int j = block; j < block + 4; ++j) out[found] = index ? index[j] : j, found += static_cast<int>(flags[j]);
   }
   return found;
+}
+
+}  // namespace
+
+int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
+  return gather_crossing(columns_, count_, nullptr, arc_a, out);
+}
+
+int crossing_among(const ArcColumns& kept, int count, const int* index, const EdgeArc& arc_a, int* out) {
+  return gather_crossing(kept, count, index, arc_a, out);
+}
+
+int keep_arcs(const ArcColumns& all, int count, const bool* left_out, ArcColumns& kept, int* index) {
+  int n = 0;
+  for (int j = 0; j < count; ++j) {
+    if (left_out[j]) continue;
+    kept.face_x[n] = all.face_x[j], kept.face_y[n] = all.face_y[j], kept.face_z[n] = all.face_z[j];
+    kept.twin_x[n] = all.twin_x[j], kept.twin_y[n] = all.twin_y[j], kept.twin_z[n] = all.twin_z[j];
+    kept.across_x[n] = all.across_x[j], kept.across_y[n] = all.across_y[j], kept.across_z[n] = all.across_z[j];
+    kept.v0_x[n] = all.v0_x[j], kept.v0_y[n] = all.v0_y[j], kept.v0_z[n] = all.v0_z[j];
+    index[n++] = j;
+  }
+  return n;
 }
 
 // Sorting the twin steps pairs every edge with its other face in E log E.

@@ -64,6 +64,15 @@ class EdgeArcs {
   bool complete_ = false;
 };
 
+/// Of the arcs in `all` (the first `count`), those whose `left_out` is
+/// false, in order, as columns in `kept`, and each one's index in `index`.
+/// Returns how many.
+int keep_arcs(const ArcColumns& all, int count, const bool* left_out, ArcColumns& kept, int* index);
+
+/// EdgeArcs::crossing over arcs kept by keep_arcs: the indices written to
+/// `out` are those of `index`, in order.
+int crossing_among(const ArcColumns& kept, int count, const int* index, const EdgeArc& arc_a, int* out);
+
 /// False only when the arcs certainly do not cross, so that the pair spans
 /// no face of A - B. Rounding of the sign tests is given the benefit of the
 /// doubt: a flat or nearly flat edge (a fold of 1e-9 rad) is kept, and SAT's

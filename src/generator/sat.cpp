@@ -261,8 +261,15 @@ constexpr int kClimbFromVertices = 64;
 // every bench pair).
 constexpr int kScanPairVertices = 32;
 
-// Hulls with more edge pairs than this bound each row of pairs first (and
-// B's arcs, where the grid finds the pairs).
+// A pair with a hull of more vertices than this bounds each face by the
+// other hull's ball before it projects or climbs: on 32-point hulls most
+// faces face away and end there, where projecting the other hull for each
+// of them was an eighth of the call (6% faster; the same answers).
+constexpr int kFaceBallVertices = 16;
+
+// Hulls with more edge pairs than this bound each row of pairs first, and
+// B's arcs, which leaves most of B's arcs out of the rows' crossing test
+// or the grid (32-point hulls 5% faster than with every arc tested).
 constexpr int kRowBoundPairs = 1000;
 static_assert(kRowBoundPairs < kArcGridMinPairs, "the grid's arcs are bounded with the rows' balls");
 
@@ -286,10 +293,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   const auto measure_balls = [&] {
     if (!balls) add_inner_ball(a, sa), add_inner_ball(b, sb), balls = true;
   };
-  // Large hulls climb to each face's support; B's ball first bounds a face
-  // of A, and A's ball a face of B, at the cost of a dot product: most face
-  // away from the other hull.
-  const bool face_balls = a.vertex_count() > kClimbFromVertices || b.vertex_count() > kClimbFromVertices;
+  // B's ball first bounds a face of A, and A's ball a face of B, at the
+  // cost of a dot product: most face away from the other hull. Large hulls
+  // then climb to each face's support.
+  const bool face_balls = a.vertex_count() > kFaceBallVertices || b.vertex_count() > kFaceBallVertices;
   if (face_balls) measure_balls();
   int on_b = 0, on_a = 0;  // where the last climbs ended: the next one starts there
   for (int f = 0; f < a.face_count(); ++f) {
@@ -397,16 +404,27 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     std::fill(row_margin, row_margin + arcs_a.size(), 0.0);
   int near[kMaxArcs];
   const bool few_pairs = arcs_a.size() * arcs_b.size() < kArcGridMinPairs;
-  if (!few_pairs) {
-    // B's arcs bounded the same way, each over its arc negated (where -m
-    // meets it, B's edge is B's support along -m): an arc whose every pair
-    // is hopeless is left out of the grid.
+  // B's arcs bounded the same way, each over its arc negated (where -m
+  // meets it, B's edge is B's support along -m): an arc whose every pair
+  // is hopeless is left out of the grid, or of the rows' crossing test.
+  bool left_out[kMaxArcs];
+  if (row_bounds) {
     double out_margin[kMaxArcs];
     arcs_above(arcs_b, sa.centre, past - sa.inner, -centres, past - sa.inner - sb.inner, out_margin);
-    bool left_out[kMaxArcs];
     for (int j = 0; j < arcs_b.size(); ++j) left_out[j] = out_margin[j] > 0;
-    kept_grid.build(arcs_b, left_out);
   }
+  if (few_pairs && row_bounds) {
+    // Each row is tested against B's arcs left in only: most are out (the
+    // test over every arc of B was a fifth of a 32-point pair's call).
+    static thread_local ArcColumns kept_b;
+    static thread_local int kept_index[kMaxArcs];
+    const int kept = keep_arcs(arcs_b.columns(), arcs_b.size(), left_out, kept_b, kept_index);
+    for (int i = 0; i < arcs_a.size(); ++i)
+      if (!(row_margin[i] > 0) && !against(i, near, crossing_among(kept_b, kept, kept_index, arcs_a[i], near)))
+        return best;
+    return best;
+  }
+  if (!few_pairs) kept_grid.build(arcs_b, left_out);
   if (few_pairs || 4 * kept_grid.unbinned() > arcs_b.size()) {
     // Each arc of A against the arcs of B that may cross it, found for the
     // whole row in vector lanes: the pair loop was most of a small hull's
