@@ -6,7 +6,6 @@
 
 #include "generator/coplanar_patch.h"
 #include "generator/arc_bounds.h"
-#include "generator/arc_grid.h"
 #include "generator/edge_arcs.h"
 #include "geometry/parallelepiped.h"
 #include "geometry/tolerances.h"
@@ -203,9 +202,9 @@ void parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult&
 // and 992 before the balls and the climbs). Large hulls bound more at once,
 // before any climb: a face by the other hull's ball, and a whole row of edge
 // pairs (an arc of A against every arc of B) over the arc where their axes lie,
-// so that most rows and most of B's arcs never reach the grid (on 128-point
-// hulls 303 of 378 rows end there, and 304 of B's 378 arcs; the family's calls
-// take 1.7-2.6x less time, 32-point hulls' 1.3x less). A skipped axis could not
+// so that most rows and most of B's arcs never reach the crossing test (on
+// 128-point hulls 303 of 378 rows end there, and 304 of B's 378 arcs; the
+// family's calls take 1.7-2.6x less time, 32-point hulls' 1.3x less). A skipped axis could not
 // have changed `best`: its overlap exceeds the best by more than any tie's
 // slack. A face normal skipped this way is not a separating axis in its own
 // direction; reversed it may be, and then a later axis proves the separation
@@ -269,9 +268,8 @@ constexpr int kFaceBallVertices = 16;
 
 // Hulls with more edge pairs than this bound each row of pairs first, and
 // B's arcs, which leaves most of B's arcs out of the rows' crossing test
-// or the grid (32-point hulls 5% faster than with every arc tested).
+// (32-point hulls 5% faster than with every arc tested).
 constexpr int kRowBoundPairs = 1000;
-static_assert(kRowBoundPairs < kArcGridMinPairs, "the grid's arcs are bounded with the rows' balls");
 
 int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
   return hull.vertex_count() > kClimbFromVertices ? hull.climb_to_support(direction, from)
@@ -331,11 +329,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     parallelepiped_edge_axes(a, b, best);
     return best;
   }
-  // The arcs and the grid live in thread-local storage, not on the call's
-  // stack (about 84 KB for 128-point hulls); a call runs to its end before
+  // The arcs live in thread-local storage, not on the call's stack (about
+  // 70 KB each, sized for 128-point hulls); a call runs to its end before
   // the thread makes another.
   static thread_local EdgeArcs kept_arcs_a, kept_arcs_b;
-  static thread_local ArcGrid kept_grid;
   kept_arcs_a.build(a);
   kept_arcs_b.build(b);
   const EdgeArcs &arcs_a = kept_arcs_a, &arcs_b = kept_arcs_b;
@@ -378,7 +375,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   const auto against = [&](int i, const int* js, int count) {
     const EdgeArc& x = arcs_a[i];
     for (int k = 0; k < count; ++k) {
-      const int j = js ? js[k] : k;
+      const int j = js[k];
       const EdgeArc& y = arcs_b[j];
       if (!may_span_minkowski_face(x, y) || pair_is_hopeless(x, y)) continue;
       const bool apart = !consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
@@ -388,6 +385,16 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
     }
     return true;
   };
+  int near[kMaxArcs];
+  if (!row_bounds) {
+    // Each arc of A against the arcs of B that may cross it, found for the
+    // whole row in vector lanes: the pair loop was most of a small hull's
+    // SAT, and with only the first of the three tests in lanes, ten pairs
+    // in eleven reached the loop to fail the other two (32-point hulls).
+    for (int i = 0; i < arcs_a.size(); ++i)
+      if (!against(i, near, arcs_b.crossing(arcs_a[i], near))) return best;
+    return best;
+  }
   // Whole rows at once, before their candidates are found: every pair in
   // a row has its axis m on A's arc, where A's edge is A's support, so
   // along m its overlap is at least m . (a0 - B's centre) + B's ball, and
@@ -398,44 +405,25 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   // bounding each row in turn did (a fifth of a 128-point call).
   const double past = best.depth + tie_room;
   double row_margin[kMaxArcs];
-  if (row_bounds)
-    arcs_above(arcs_a, sb.centre, past - sb.inner, centres, past - sa.inner - sb.inner, row_margin);
-  else
-    std::fill(row_margin, row_margin + arcs_a.size(), 0.0);
-  int near[kMaxArcs];
-  const bool few_pairs = arcs_a.size() * arcs_b.size() < kArcGridMinPairs;
+  arcs_above(arcs_a, sb.centre, past - sb.inner, centres, past - sa.inner - sb.inner, row_margin);
   // B's arcs bounded the same way, each over its arc negated (where -m
   // meets it, B's edge is B's support along -m): an arc whose every pair
-  // is hopeless is left out of the grid, or of the rows' crossing test.
+  // is hopeless is left out, and each row is tested against the arcs left
+  // in only. Most are out: the test over every arc of B was a fifth of a
+  // 32-point pair's call. The arcs left in are few enough that the lanes
+  // pass over them costs less than a grid on the Gauss sphere offering
+  // each row the arcs in the cells it passes (128-point hulls took 1.24x
+  // the time with the grid, 64-gon cylinders 1.08x).
+  double out_margin[kMaxArcs];
+  arcs_above(arcs_b, sa.centre, past - sa.inner, -centres, past - sa.inner - sb.inner, out_margin);
   bool left_out[kMaxArcs];
-  if (row_bounds) {
-    double out_margin[kMaxArcs];
-    arcs_above(arcs_b, sa.centre, past - sa.inner, -centres, past - sa.inner - sb.inner, out_margin);
-    for (int j = 0; j < arcs_b.size(); ++j) left_out[j] = out_margin[j] > 0;
-  }
-  if (few_pairs && row_bounds) {
-    // Each row is tested against B's arcs left in only: most are out (the
-    // test over every arc of B was a fifth of a 32-point pair's call).
-    static thread_local ArcColumns kept_b;
-    static thread_local int kept_index[kMaxArcs];
-    const int kept = keep_arcs(arcs_b.columns(), arcs_b.size(), left_out, kept_b, kept_index);
-    for (int i = 0; i < arcs_a.size(); ++i)
-      if (!(row_margin[i] > 0) && !against(i, near, crossing_among(kept_b, kept, kept_index, arcs_a[i], near)))
-        return best;
-    return best;
-  }
-  if (!few_pairs) kept_grid.build(arcs_b, left_out);
-  if (few_pairs || 4 * kept_grid.unbinned() > arcs_b.size()) {
-    // Each arc of A against the arcs of B that may cross it, found for the
-    // whole row in vector lanes: the pair loop was most of a small hull's
-    // SAT, and with only the first of the three tests in lanes, ten pairs
-    // in eleven reached the loop to fail the other two (32-point hulls).
-    for (int i = 0; i < arcs_a.size(); ++i)
-      if (!(row_margin[i] > 0) && !against(i, near, arcs_b.crossing(arcs_a[i], near))) return best;
-    return best;
-  }
+  for (int j = 0; j < arcs_b.size(); ++j) left_out[j] = out_margin[j] > 0;
+  static thread_local ArcColumns kept_b;
+  static thread_local int kept_index[kMaxArcs];
+  const int kept = keep_arcs(arcs_b.columns(), arcs_b.size(), left_out, kept_b, kept_index);
   for (int i = 0; i < arcs_a.size(); ++i)
-    if (!(row_margin[i] > 0) && !against(i, near, kept_grid.candidates(arcs_a[i], near))) return best;
+    if (!(row_margin[i] > 0) && !against(i, near, crossing_among(kept_b, kept, kept_index, arcs_a[i], near)))
+      return best;
   return best;
 }
 

@@ -31,9 +31,10 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// Unlike the tutorial's (generator/baseline), an edge axis must
 /// beat the face axes by tol::kEdgeAxisBias (F3), edges between coplanar
 /// faces give no axis (F4), a face normal counts one way only (F7), only
-/// edge pairs whose Gauss arcs may cross are tried (edge_arcs.h, found
-/// through arc_grid.h on large hulls), and an axis is measured in full only
-/// when a cheap lower bound on its overlap leaves it a chance (sat.cpp).
+/// edge pairs whose Gauss arcs may cross are tried (edge_arcs.h, among the
+/// arcs of B that arc_bounds.h leaves in on large hulls), and an axis is
+/// measured in full only when a cheap lower bound on its overlap leaves it
+/// a chance (sat.cpp).
 SatResult run_sat(const PosedHull& a, const PosedHull& b);
 /// Every axis measured in full and every edge pair tried: what the pruning
 /// and the bounds must agree with.
