@@ -25,9 +25,7 @@ std::optional<std::vector<QhullFacet>> simplicial_facets(const std::vector<Vec3>
         if (!(twice_area > kNearPlane * diameter * diameter)) continue;
         const double near = kNearPlane * diameter * twice_area;  // a distance of kNearPlane x diameter
         int above = 0, below = 0, on = 0;
-        // Points on both sides: no facet, whatever the rest (most triangles
-        // of a cloud end here after a few points).
-        for (int l = 0; l < n && !(above > 0 && below > 0); ++l) {
+        for (int l = 0; l < n; ++l) {
           if (l == i || l == j || l == k) continue;
           const double height = normal.dot(points[l] - points[i]);
           above += height > near;
