@@ -204,12 +204,12 @@ void parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult&
 // pairs (an arc of A against every arc of B) over the arc where their axes lie,
 // so that most rows and most of B's arcs never reach the crossing test (on
 // 128-point hulls 303 of 378 rows end there, and 304 of B's 378 arcs; the
-// family's calls take 1.7-2.6x less time, 32-point hulls' 1.3x less). A skipped axis could not
-// have changed `best`: its overlap exceeds the best by more than any tie's
-// slack. A face normal skipped this way is not a separating axis in its own
-// direction; reversed it may be, and then a later axis proves the separation
-// (SAT's axes in their own directions suffice), with another normal, which a
-// separated manifold does not report.
+// family's calls take 1.7-2.6x less time, 32-point hulls' 1.3x less). A
+// skipped axis could not have changed `best`: its overlap exceeds the best
+// by more than any tie's slack. A face normal skipped this way is not a
+// separating axis in its own direction; reversed it may be, and then a later
+// axis proves the separation (SAT's axes in their own directions suffice),
+// with another normal, which a separated manifold does not report.
 struct HullSummary {
   Vec3 centre = Vec3::Zero();
   double reach = 0;  ///< largest distance of a vertex from the centre
@@ -263,7 +263,7 @@ constexpr int kScanPairVertices = 32;
 // A pair with a hull of more vertices than this bounds each face by the
 // other hull's ball before it projects or climbs: on 32-point hulls most
 // faces face away and end there, where projecting the other hull for each
-// of them was an eighth of the call (6% faster; the same answers).
+// of them was an eighth of the call (5% faster; the same answers).
 constexpr int kFaceBallVertices = 16;
 
 // Hulls with more edge pairs than this bound each row of pairs first, and
