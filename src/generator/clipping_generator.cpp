@@ -67,9 +67,10 @@ void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
 // planes, with a band no narrower: clip_to_plane would keep none. F27's
 // faces are most of a large hull's near half, and nearly all lie beside a
 // small reference face (a 128-point pair clipped 100 faces a call for a
-// handful of points, 15% of the call). A face of a larger patch is clipped as before even so: the
-// patch's points inside the prism lie in its other faces, which would give
-// them too, but starting from another corner, in another order.
+// handful of points, 15% of the call). A face of a larger patch is clipped
+// as before even so: the patch's points inside the prism lie in its other
+// faces, which would give them too, but starting from another corner, in
+// another order.
 bool lone_face_clips_to_nothing(const PosedHull& incident, int f, const ClipFace& reference,
                                 double reference_largest) {
   const PrismSides* sides = reference.sides;
