@@ -286,6 +286,68 @@ TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContacts
   EXPECT_GT(contacts, 200);
 }
 
+// Every face of `h` as a fan of triangles, each normal turned by up to
+// `wobble` rad about an axis of its own: coplanar patches whose triangles'
+// normals are within tol::kCoplanarSine of some and not of others, so that
+// the patch gathered depends on the triangle it starts from.
+Hull fan_triangulated(const Hull& h, double wobble) {
+  std::vector<Vec3> vertices;
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (int i = 0; i < h.vertex_count(); ++i) vertices.push_back(h.vertex(i));
+  for (int f = 0; f < h.face_count(); ++f)
+    for (int k = 1; k + 1 < h.face_size(f); ++k) {
+      loops.push_back({h.face_vertex(f, 0), h.face_vertex(f, k), h.face_vertex(f, k + 1)});
+      const Vec3 axis = h.face_normal(f).cross(Vec3(std::cos(1.7 * k), std::sin(2.3 * k), 0.3)).normalized();
+      normals.push_back(test::about(axis, wobble * std::sin(0.9 * k)) * h.face_normal(f));
+    }
+  return Hull::from_faces(vertices, loops, normals);
+}
+
+// A triangulated face is met by F27 once per triangle, and each triangle
+// gathers the patch: a loop met again is not clipped again. Through a
+// face_polygon step that is not the built-in's own, every triangle is
+// clipped, and each answer must be the same bytes: a small triangulated
+// 32-gon prism, cube and sphere hull deep below a large face or astride
+// its edge, the triangles' normals exactly the face's, or wobbling by 0.8
+// of the coplanar sine (patches that differ from triangle to triangle) and
+// by twice it (patches of one or two triangles).
+TEST(ClippingGenerator, ATriangulatedPatchMetAgainFromAnotherTriangleIsClippedOnceWithTheSameContacts) {
+  ClippingSteps every_face;
+  every_face.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  const ClippingSteps builtin;
+  std::vector<Vec3> prism;
+  for (int k = 0; k < 32; ++k) {
+    const double angle = 2 * M_PI * k / 32;
+    for (const double z : {-0.05, 0.05}) prism.push_back(Vec3(0.1 * std::cos(angle), 0.1 * std::sin(angle), z));
+  }
+  const Hull slab = *build_hull(test::box_points(10, 10, 1)).hull;
+  const mfz_hull va = slab.view();
+  const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
+  int contacts = 0;
+  for (const double wobble : {0.0, 0.8 * tol::kCoplanarSine, 2 * tol::kCoplanarSine}) {
+    for (const Hull& whole : {*build_hull(prism).hull, *build_hull(test::box_points(0.1, 0.1, 0.1)).hull,
+                              *build_hull(test::sphere_points(48, 7)).hull}) {
+      const Hull b = fan_triangulated(whole, wobble);
+      const mfz_hull vb = b.view();
+      for (int k = 0; k < 12; ++k) {
+        // Half of them astride the slab's edge, whose side plane cuts the
+        // triangles: their points are theirs alone, not the corners'.
+        const Vec3 at(k % 2 ? 10 + 0.05 * std::cos(0.7 * k) : 0.3 * std::cos(0.7 * k), 0.3 * std::sin(1.3 * k), 0.97);
+        const mfz_pose pb = Pose{at, test::about(Vec3(1, 2, 3 + k), 0.37 * k)}.to_abi();
+        mfz_manifold once{}, every{};
+        ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, once, nullptr, builtin), 0);
+        ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, every, nullptr, every_face), 0);
+        ASSERT_EQ(once.contact_count, every.contact_count) << "wobble " << wobble << ", pose " << k;
+        EXPECT_EQ(std::memcmp(once.contacts, every.contacts, sizeof(mfz_contact) * every.contact_count), 0)
+            << "wobble " << wobble << ", pose " << k;
+        contacts += every.contact_count;
+      }
+    }
+  }
+  EXPECT_GT(contacts, 500);
+}
+
 // A sliver face of A 2e14 long, parallel to a face of B, whose hull reaches
 // 2.8e17 from A: an edge of each spans the face's normal, and its overlap is
 // the face's to the rounding of the vertices, about 60 in any projection.

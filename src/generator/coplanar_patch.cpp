@@ -2,6 +2,9 @@
 // clipped as, the whole planar face.
 #include "generator/coplanar_patch.h"
 
+#include <algorithm>
+#include <cstdint>
+
 #include "generator/clipping_generator.h"
 
 namespace mfz {
@@ -10,56 +13,86 @@ namespace {
 
 /// Fixed capacity of a coplanar patch: faces, and boundary edges.
 constexpr int kMaxPatchFaces = 256;
-constexpr int kMaxPatchEdges = 512;
+constexpr int kMaxPatchEdges = kMaxPatchLoop;
 
-bool contains(const int* items, int count, int item) {
-  for (int i = 0; i < count; ++i)
-    if (items[i] == item) return true;
-  return false;
-}
+// The faces of a patch, in the order gathered, with a mark per face for
+// the first kMarkedFaces faces of a hull: a search of the list per step
+// grew with the patch's square, and a triangulated 30-gon cap, gathered
+// once per triangle, spent 70% of its gather there.
+class PatchMembers {
+ public:
+  explicit PatchMembers(int first) { add(first); }
+  int size() const { return count_; }
+  int operator[](int i) const { return faces_[i]; }
+  bool full() const { return count_ == kMaxPatchFaces; }
+  bool has(int face) const {
+    if (face < 0) return false;  // no face across: a malformed hull's open edge
+    if (face < kMarkedFaces) return (marks_[face / 64] >> (face % 64)) & 1u;
+    return std::find(faces_, faces_ + count_, face) != faces_ + count_;
+  }
+  void add(int face) {
+    if (face < kMarkedFaces) marks_[face / 64] |= uint64_t{1} << (face % 64);
+    faces_[count_++] = face;
+  }
+
+ private:
+  static constexpr int kMarkedFaces = 2048;
+  uint64_t marks_[kMarkedFaces / 64] = {};
+  int faces_[kMaxPatchFaces];
+  int count_ = 0;
+};
 
 // Grows the patch breadth first across edges to faces of the same plane.
-int gather_patch(const PosedHull& hull, int face, int* members) {
+void gather_patch(const PosedHull& hull, int face, PatchMembers& members) {
   const Vec3 normal = hull.world_face_normal(face);
-  int count = 1;
-  members[0] = face;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < members.size(); ++i) {
     const int f = members[i], n = hull.face_size(f);
     for (int k = 0; k < n; ++k) {
       const int g = hull.face_across_step(f, k);
-      if (g < 0 || count == kMaxPatchFaces || contains(members, count, g)) continue;
-      if (coplanar_normals(hull.world_face_normal(g), normal)) members[count++] = g;
+      if (g < 0 || members.full() || members.has(g)) continue;
+      if (coplanar_normals(hull.world_face_normal(g), normal)) members.add(g);
     }
   }
-  return count;
 }
 
 }  // namespace
 
-void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
-  int members[kMaxPatchFaces];
-  const int count = gather_patch(hull, face, members);
-  if (count == 1) return face_loop(hull, face, out);
+int patch_loop(const PosedHull& hull, int face, int* loop, int& members) {
+  PatchMembers member(face);
+  gather_patch(hull, face, member);
+  members = member.size();
+  if (members == 1) {
+    const int n = std::min(hull.face_size(face), kMaxPatchEdges);
+    for (int k = 0; k < n; ++k) loop[k] = hull.face_vertex(face, k);
+    return n;
+  }
   // The patch's boundary: the loop steps whose other side is outside it.
   int from[kMaxPatchEdges], to[kMaxPatchEdges], edges = 0;
-  for (int i = 0; i < count; ++i) {
-    const int f = members[i], n = hull.face_size(f);
+  for (int i = 0; i < members; ++i) {
+    const int f = member[i], n = hull.face_size(f);
     for (int k = 0; k < n && edges < kMaxPatchEdges; ++k) {
       const int a = hull.face_vertex(f, k), b = hull.face_vertex(f, (k + 1) % n);
-      if (!contains(members, count, hull.face_across_step(f, k))) from[edges] = a, to[edges++] = b;
+      if (!member.has(hull.face_across_step(f, k))) from[edges] = a, to[edges++] = b;
     }
   }
   // Chain the steps into one loop; it keeps the faces' counter-clockwise turn.
-  out.clear();
-  int current = 0;
+  int size = 0, current = 0;
   for (int step = 0; step < edges; ++step) {
-    out.push(hull.world_vertex(from[current]));
+    loop[size++] = from[current];
     int next = -1;
     for (int j = 0; j < edges && next < 0; ++j)
       if (from[j] == to[current]) next = j;
     if (next <= 0) break;  // closed (or, on a malformed hull, broken)
     current = next;
   }
+  return size;
+}
+
+void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
+  int loop[kMaxPatchLoop], members = 0;
+  const int size = patch_loop(hull, face, loop, members);
+  out.clear();
+  for (int k = 0; k < size; ++k) out.push(hull.world_vertex(loop[k]));
 }
 
 double patch_area(const PosedHull& hull, int face) {

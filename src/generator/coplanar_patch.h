@@ -10,6 +10,12 @@ namespace mfz {
 /// The boundary of the patch around `face`, world space, counter-clockwise
 /// about the face's normal; the face's own loop when it stands alone.
 void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out);
+/// The most corners a patch's loop has.
+inline constexpr int kMaxPatchLoop = 512;
+/// The same loop as the hull's vertex indices, in coplanar_patch's order:
+/// writes at most kMaxPatchLoop to `loop` and returns how many, and in
+/// `members` how many faces the patch holds.
+int patch_loop(const PosedHull& hull, int face, int* loop, int& members);
 /// The patch's area (the same whether the face arrived whole or triangulated).
 double patch_area(const PosedHull& hull, int face);
 
