@@ -185,6 +185,29 @@ TEST(BruteForceSat, EdgesParallelToRoundingSpanNoAxis) {
   EXPECT_EQ(edge_axes, 96);
 }
 
+// The edge pairs' projections run a row of axes at a time, eight axes per
+// block and the rest one by one: every overlap, either way, is the one the
+// plain loop over the points gives, to the bit. Hulls of 4 to 64 points,
+// whose rows (B's edges) end anywhere within a block.
+TEST(BruteForceSat, EveryEdgeAxisOverlapsAsMuchAsItsPlainProjectionSays) {
+  int edge_axes = 0;
+  for (unsigned seed = 1; seed <= 24; ++seed) {
+    const int points_a = 4 + static_cast<int>(seed * 7 % 61), points_b = 4 + static_cast<int>(seed * 13 % 61);
+    const Scene s = scene_of(test::make_case(test::sphere_points(points_a, seed), {},
+                                             test::sphere_points(points_b, 100 + seed),
+                                             {Vec3(0.3, 0.2, 0.9), test::about(Vec3(1, 2, 3), 0.1 * seed)}));
+    for (const RankedAxis& axis : rank_sat_axes(s)) {
+      if (axis.kind != AxisKind::edge_edge) continue;
+      ++edge_axes;
+      ASSERT_EQ(axis.overlap, directed_overlap(s.world_a, s.world_b, axis.normal))
+          << "seed " << seed << ", edges " << axis.feature_a << " and " << axis.feature_b;
+      ASSERT_EQ(axis.reverse_overlap, directed_overlap(s.world_b, s.world_a, axis.normal))
+          << "seed " << seed << ", edges " << axis.feature_a << " and " << axis.feature_b;
+    }
+  }
+  EXPECT_GT(edge_axes, 50000);
+}
+
 // Two needles crossing through each other (a minimised case from check)
 // overlap by about their thickness along the edge axis either way: n and -n
 // are both minimal, and only the reverse overlap shows it.

@@ -75,15 +75,34 @@ MFZ_VECTOR_LANES void axes_of_row(const Vec3& ea, double length_a, const double*
 }
 
 // Every point projected onto a row of axes (columns nx, ny, nz): the least
-// and the greatest projection per axis.
+// and the greatest projection per axis. Eight axes at a time, each block's
+// least and greatest kept in registers while every point passes: a pass of
+// each point over the whole row loaded and stored them per point, and the
+// row spent its time moving them (32-point hulls: 219-223 -> 177 us). Per
+// axis the points come in the same order, so every bound is the same bits.
 MFZ_VECTOR_LANES void project_row(const PointColumns& points, const double* nx, const double* ny,
                                   const double* nz, size_t row, double* lowest, double* highest) {
-  for (size_t j = 0; j < row; ++j) lowest[j] = INFINITY, highest[j] = -INFINITY;
+  constexpr size_t kBlock = 8;
   const double *px = points.xyz.data(), *py = px + points.n, *pz = py + points.n;
+  size_t j0 = 0;
+  for (; j0 + kBlock <= row; j0 += kBlock) {
+    double low[kBlock], high[kBlock];
+    for (size_t k = 0; k < kBlock; ++k) low[k] = INFINITY, high[k] = -INFINITY;
+    for (size_t i = 0; i < points.n; ++i) {
+      const double x = px[i], y = py[i], z = pz[i];
+#pragma omp simd
+      for (size_t k = 0; k < kBlock; ++k) {
+        const double d = nx[j0 + k] * x + ny[j0 + k] * y + nz[j0 + k] * z;
+        low[k] = d < low[k] ? d : low[k];
+        high[k] = d > high[k] ? d : high[k];
+      }
+    }
+    for (size_t k = 0; k < kBlock; ++k) lowest[j0 + k] = low[k], highest[j0 + k] = high[k];
+  }
+  for (size_t j = j0; j < row; ++j) lowest[j] = INFINITY, highest[j] = -INFINITY;
   for (size_t i = 0; i < points.n; ++i) {
     const double x = px[i], y = py[i], z = pz[i];
-#pragma omp simd
-    for (size_t j = 0; j < row; ++j) {
+    for (size_t j = j0; j < row; ++j) {
       const double d = nx[j] * x + ny[j] * y + nz[j] * z;
       lowest[j] = d < lowest[j] ? d : lowest[j];
       highest[j] = d > highest[j] ? d : highest[j];
