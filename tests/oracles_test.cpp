@@ -185,10 +185,10 @@ TEST(BruteForceSat, EdgesParallelToRoundingSpanNoAxis) {
   EXPECT_EQ(edge_axes, 96);
 }
 
-// The edge pairs' projections run a row of axes at a time, eight axes per
-// block and the rest one by one: every overlap, either way, is the one the
-// plain loop over the points gives, to the bit. Hulls of 4 to 64 points,
-// whose rows (B's edges) end anywhere within a block.
+// The edge pairs' projections run a row of axes at a time, four points at
+// once and the last few one by one: every overlap, either way, is the one
+// the plain loop over the points gives, to the bit. Hulls of 4 to 64
+// points, whose counts end anywhere within a group of four.
 TEST(BruteForceSat, EveryEdgeAxisOverlapsAsMuchAsItsPlainProjectionSays) {
   int edge_axes = 0;
   for (unsigned seed = 1; seed <= 24; ++seed) {
