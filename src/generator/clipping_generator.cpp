@@ -179,8 +179,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
         if (patches.holds(corners, size)) continue;
         patches.keep(corners, size);
       }
-      polygon.clear();
-      for (int k = 0; k < size; ++k) polygon.push(incident.world_vertex(corners[k]));
+      loop_points(incident, corners, size, polygon);
     } else {
       steps.face_polygon(incident, f, polygon);
     }

@@ -88,11 +88,14 @@ int patch_loop(const PosedHull& hull, int face, int* loop, int& members) {
   return size;
 }
 
-void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
-  int loop[kMaxPatchLoop], members = 0;
-  const int size = patch_loop(hull, face, loop, members);
+void loop_points(const PosedHull& hull, const int* loop, int size, ClipPolygon& out) {
   out.clear();
   for (int k = 0; k < size; ++k) out.push(hull.world_vertex(loop[k]));
+}
+
+void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
+  int loop[kMaxPatchLoop], members = 0;
+  loop_points(hull, loop, patch_loop(hull, face, loop, members), out);
 }
 
 double patch_area(const PosedHull& hull, int face) {
