@@ -1,18 +1,22 @@
 #pragma once
 /// \file
-/// The facets of a small cloud's hull in general position, by brute force:
-/// every triangle of three points with every other point clearly below its
-/// plane is a facet. Qhull spends about 14 us of set-up on every call,
-/// whatever the cloud (it draws a thousand random numbers to test its generator,
-/// reads the process's CPU clock by a system call, prints its options into
-/// a string): three quarters of an 8-point hull, a quarter of a property
-/// case, and no way around it through its API (a reused qhT saves nothing).
-/// This takes about a microsecond for 8 points.
+/// The facets of a cloud's hull in general position, without Qhull: the
+/// hull grown a point at a time (the beneath-beyond step), every facet a
+/// triangle with every other point clearly below its plane. Qhull spends
+/// about 14 us of set-up on every call, whatever the cloud (it draws a
+/// thousand random numbers to test its generator, reads the process's CPU
+/// clock by a system call, prints its options into a string): three
+/// quarters of an 8-point hull, and no way around it through its API (a
+/// reused qhT saves nothing). Past the set-up, its merging and its sets
+/// cost more than the hull itself where nothing is to be merged: half a
+/// 32-point property case's scene was Qhull.
 ///
-/// It only ever answers where Qhull would give the same facets: a fourth
-/// point within kNearPlane of a candidate's plane (a face Qhull would merge,
-/// or a point it would call coplanar) makes it decline, and so does a cloud
-/// of more than kSimplicialMaxPoints; the caller then asks Qhull.
+/// It only ever answers where Qhull would give the same facets: a point
+/// within kNearPlane of a triangle's plane (a face Qhull would merge, or a
+/// point it would call coplanar) makes it decline, and so does a cloud of
+/// more than kSimplicialMaxPoints; the caller then asks Qhull. Where it
+/// answers, the facets are those of the brute force over every triple of
+/// points that it replaced, to the bit, in the same order.
 #include <optional>
 #include <vector>
 
@@ -20,9 +24,10 @@
 
 namespace mfz {
 
-/// Brute force tries every triangle against every point: n^4 / 6 steps,
-/// cheaper than Qhull's set-up up to about this many points.
-inline constexpr int kSimplicialMaxPoints = 12;
+/// The growing hull tries each point against every triangle, and each
+/// final triangle against every point: n^2 steps, and the steps' index is
+/// n^2 words.
+inline constexpr int kSimplicialMaxPoints = 128;
 
 /// A point within this distance (x the cloud's diameter) of a candidate
 /// facet's plane is on it, as far as this builder may tell: the cloud is
