@@ -108,6 +108,40 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
   return false;
 }
 
+// The loops' steps, in loop order, grouped by the edge they run along:
+// `lead[k]` is the first step along step k's edge, and for a lead, `last`
+// the last and `count` how many. Bucketed by the edge's lower vertex, whose
+// neighbours are few, so that no sort is needed: sorting the steps, once to
+// pair them into edges and twice to validate them, was a sixth of a
+// 32-point scene once Qhull was out of it.
+struct StepsByEdge {
+  std::vector<int> from, to, face;
+  std::vector<int> lead, last, count;
+
+  void group(int vertex_count) {
+    const int steps = static_cast<int>(from.size());
+    std::vector<int> start(static_cast<size_t>(vertex_count) + 2, 0);
+    for (int k = 0; k < steps; ++k) ++start[std::min(from[k], to[k]) + 2];
+    for (int v = 0; v <= vertex_count; ++v) start[v + 1] += start[v];
+    std::vector<int> bucket(static_cast<size_t>(steps));
+    for (int k = 0; k < steps; ++k) bucket[start[std::min(from[k], to[k]) + 1]++] = k;
+    lead.assign(static_cast<size_t>(steps), -1);
+    last.assign(static_cast<size_t>(steps), -1);
+    count.assign(static_cast<size_t>(steps), 0);
+    for (int v = 0; v < vertex_count; ++v)
+      for (int i = start[v]; i < start[v + 1]; ++i) {
+        const int k = bucket[i];
+        if (lead[k] >= 0) continue;
+        const int high = std::max(from[k], to[k]);
+        for (int j = i; j < start[v + 1]; ++j) {
+          const int other = bucket[j];
+          if (std::max(from[other], to[other]) != high) continue;
+          lead[other] = k, last[k] = other, ++count[k];
+        }
+      }
+  }
+};
+
 }  // namespace
 
 // The measures are taken in local space: a rigid motion changes none of
@@ -194,35 +228,20 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
     shape.face_offsets.push_back(static_cast<int32_t>(shape.face_vertices.size()));
   }
   for (const Vec3& n : normals) shape.face_normals.push_back(to_abi(n));
-  // Pair the loop steps by their undirected key: sorting beats a map here,
-  // and every relation builds hulls. Edges keep the order of their first step.
-  struct Step {
-    long long key;
-    int order, from, to, face;
-  };
-  std::vector<Step> steps;
-  steps.reserve(steps_total);
-  const long long base = static_cast<long long>(shape.vertices.size()) + 1;
+  // Edges keep the order of their first step; the step back gives the
+  // face on the right.
+  StepsByEdge steps;
+  steps.from.reserve(steps_total), steps.to.reserve(steps_total), steps.face.reserve(steps_total);
   for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
     const auto& loop = loops[f];
-    for (size_t k = 0; k < loop.size(); ++k) {
-      const int a = loop[k], b = loop[(k + 1) % loop.size()];
-      steps.push_back({std::min(a, b) * base + std::max(a, b), static_cast<int>(steps.size()), a, b, f});
-    }
+    for (size_t k = 0; k < loop.size(); ++k)
+      steps.from.push_back(loop[k]), steps.to.push_back(loop[(k + 1) % loop.size()]), steps.face.push_back(f);
   }
-  std::sort(steps.begin(), steps.end(),
-            [](const Step& x, const Step& y) { return x.key != y.key ? x.key < y.key : x.order < y.order; });
-  std::vector<std::pair<int, HullEdge>> first_seen;
-  first_seen.reserve(steps_total / 2);
-  for (size_t i = 0; i < steps.size();) {
-    size_t j = i;
-    while (j + 1 < steps.size() && steps[j + 1].key == steps[i].key) ++j;
-    first_seen.push_back({steps[i].order, {steps[i].from, steps[i].to, steps[i].face, j > i ? steps[j].face : -1}});
-    i = j + 1;
-  }
-  std::sort(first_seen.begin(), first_seen.end(),
-            [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (const auto& [order, edge] : first_seen) shape.edges.push_back(edge);
+  steps.group(static_cast<int>(shape.vertices.size()));
+  for (int k = 0; k < static_cast<int>(steps_total); ++k)
+    if (steps.lead[k] == k)
+      shape.edges.push_back(
+          {steps.from[k], steps.to[k], steps.face[k], steps.count[k] > 1 ? steps.face[steps.last[k]] : -1});
   hull.measure_shape();
   return hull;
 }
@@ -283,28 +302,24 @@ HullBuild build_hull(const std::vector<Vec3>& points) {
 std::string validate_hull(const Hull& hull) {
   const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
   if (v < 4 || f < 4) return "fewer than four vertices or faces";
-  // Every loop step from -> to once, and its reverse once: the sorted steps
-  // equal the sorted reversed steps, with no step repeated.
-  std::vector<long long> steps, reversed;
-  steps.reserve(2 * static_cast<size_t>(e));
-  reversed.reserve(2 * static_cast<size_t>(e));
+  // Every loop step from -> to once, and its reverse once: each edge's
+  // steps are exactly two, one each way.
+  StepsByEdge steps;
   for (int face = 0; face < f; ++face) {
     const int n = hull.face_size(face);
     if (n < 3) return "a face has fewer than three vertices";
     for (int k = 0; k < n; ++k) {
-      const long long from = hull.face_vertex(face, k), to = hull.face_vertex(face, (k + 1) % n);
-      steps.push_back(from * v + to);
-      reversed.push_back(to * v + from);
+      const int from = hull.face_vertex(face, k), to = hull.face_vertex(face, (k + 1) % n);
+      if (from < 0 || from >= v || to < 0 || to >= v) return "a face names a vertex the hull does not have";
+      steps.from.push_back(from), steps.to.push_back(to), steps.face.push_back(face);
     }
   }
-  std::sort(steps.begin(), steps.end());
-  std::sort(reversed.begin(), reversed.end());
-  for (size_t i = 0; i < steps.size(); ++i) {
-    const bool repeated = i + 1 < steps.size() && steps[i + 1] == steps[i];
-    if (repeated || steps[i] != reversed[i]) {
-      const long long odd = repeated || steps[i] < reversed[i] ? steps[i] : reversed[i];
-      return "edge " + std::to_string(odd / v) + "-" + std::to_string(odd % v) + " is not shared by exactly two faces";
-    }
+  steps.group(v);
+  for (int k = 0; k < static_cast<int>(steps.from.size()); ++k) {
+    if (steps.lead[k] != k) continue;
+    if (steps.count[k] != 2 || steps.from[steps.last[k]] != steps.to[k])
+      return "edge " + std::to_string(steps.from[k]) + "-" + std::to_string(steps.to[k]) +
+             " is not shared by exactly two faces";
   }
   // Every edge in two faces, checked first: an open surface is named as one.
   if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
