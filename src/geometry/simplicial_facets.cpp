@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "geometry/vector_lanes.h"
+
 namespace mfz {
 namespace {
 
@@ -16,6 +18,18 @@ struct Triangle {
   double near;  // kNearPlane x diameter in the units of normal's heights
   bool alive;
 };
+
+// How many points (columns x, y, z) lie above the plane through `corner`
+// with normal `normal`, or less than `band` below it, in vector lanes.
+MFZ_VECTOR_LANES int points_reaching(const double* x, const double* y, const double* z, int count,
+                                     const Vec3& corner, const Vec3& normal, double band) {
+  const double nx = normal.x(), ny = normal.y(), nz = normal.z();
+  const double ax = corner.x(), ay = corner.y(), az = corner.z(), below = -band;
+  int reaching = 0;
+#pragma omp simd reduction(+ : reaching)
+  for (int i = 0; i < count; ++i) reaching += nx * (x[i] - ax) + ny * (y[i] - ay) + nz * (z[i] - az) > below;
+  return reaching;
+}
 
 // Its arrays are the thread's, kept from one hull to the next: the
 // property suite and the fuzzer build two hulls a case, and allocating
@@ -177,12 +191,7 @@ class IncrementalHull {
     for (int i = 0; i < n_; ++i) x_[i] = points_[i].x(), y_[i] = points_[i].y(), z_[i] = points_[i].z();
     for (int index : alive_) {
       const Triangle& t = triangles_[index];
-      const double nx = t.normal.x(), ny = t.normal.y(), nz = t.normal.z();
-      const double ax = t.corner.x(), ay = t.corner.y(), az = t.corner.z(), below = -t.near;
-      int reaching = 0;
-      for (int i = 0; i < n_; ++i)
-        reaching += nx * (x_[i] - ax) + ny * (y_[i] - ay) + nz * (z_[i] - az) > below;
-      if (reaching != 3) return false;
+      if (points_reaching(x_.data(), y_.data(), z_.data(), n_, t.corner, t.normal, t.near) != 3) return false;
     }
     return true;
   }
