@@ -116,6 +116,25 @@ TEST(SimplicialFacets, AreQhullsFacetsOnLargeCloudsInGeneralPosition) {
   EXPECT_GT(answered, 55) << "clouds in general position are answered";
 }
 
+// Far from the origin Qhull merges within its coordinates' rounding; the
+// grown hull declines there rather than give other facets.
+TEST(SimplicialFacets, AreQhullsFacetsOnCloudsFarFromTheOrigin) {
+  int answered = 0;
+  for (unsigned seed = 1; seed <= 240; ++seed) {
+    std::vector<Vec3> points = test::sphere_points(8 + static_cast<int>(seed % 5) * 23, seed);
+    const double offset = std::pow(10.0, 6 + static_cast<int>(seed % 6));
+    const Vec3 away = offset * test::sphere_points(1, 5000 + seed)[0];
+    for (Vec3& p : points) p += away;
+    const auto grown = simplicial_facets(points);
+    if (!grown) continue;
+    ++answered;
+    std::string error;
+    ASSERT_EQ(facet_sets(*grown), facet_sets(qhull_facets(points, /*triangulate=*/false, error)))
+        << "seed " << seed << ", " << points.size() << " points " << offset << " from the origin";
+  }
+  EXPECT_GT(answered, 80);
+}
+
 TEST(SimplicialFacets, GiveTheBruteForcesFacetsToTheBitWhereItAnswered) {
   int compared = 0;
   for (unsigned seed = 1; seed <= 400; ++seed) {

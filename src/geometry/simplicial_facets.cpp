@@ -15,7 +15,7 @@ struct Triangle {
   std::array<int, 3> loop;
   Vec3 corner;  // the first corner, a
   Vec3 normal;  // (b - a) x (c - a): twice the area long
-  double near;  // kNearPlane x diameter in the units of normal's heights
+  double near;  // the band (kNearPlane x diameter, or more far out) in the units of normal's heights
   bool alive;
 };
 
@@ -46,7 +46,7 @@ struct GrowingHullArrays {
 // Builds the hull a point at a time (the beneath-beyond step of Barber,
 // Dobkin and Huhdanpaa's Quickhull paper, without its merging, which a
 // cloud in general position never needs). Declines, by returning false,
-// wherever a point lies within kNearPlane of a final triangle's plane, as
+// wherever a point lies within the band of a final triangle's plane, as
 // the brute force did of every supporting triple: there Qhull might merge,
 // or call the point coplanar, and decides instead. A point near a plane
 // while the hull grows only takes a side by its sign; whatever it builds
@@ -54,8 +54,8 @@ struct GrowingHullArrays {
 // do not close and validate_hull sends the cloud to Qhull.
 class IncrementalHull {
  public:
-  IncrementalHull(const std::vector<Vec3>& points, double diameter, GrowingHullArrays& arrays)
-      : points_(points), n_(static_cast<int>(points.size())), diameter_(diameter),
+  IncrementalHull(const std::vector<Vec3>& points, double diameter, double band, GrowingHullArrays& arrays)
+      : points_(points), n_(static_cast<int>(points.size())), diameter_(diameter), band_(band),
         face_of_step_(arrays.face_of_step), triangles_(arrays.triangles), alive_(arrays.alive), seen_(arrays.seen),
         horizon_(arrays.horizon), x_(arrays.x), y_(arrays.y), z_(arrays.z) {
     face_of_step_.assign(static_cast<size_t>(n_) * n_, -1);
@@ -120,7 +120,7 @@ class IncrementalHull {
     const double twice_area = normal.norm();
     if (!(twice_area > kNearPlane * diameter_ * diameter_)) return false;
     const int index = static_cast<int>(triangles_.size());
-    triangles_.push_back({{a, b, c}, points_[a], normal, kNearPlane * diameter_ * twice_area, true});
+    triangles_.push_back({{a, b, c}, points_[a], normal, band_ * twice_area, true});
     alive_.push_back(index);
     face_of(a, b) = face_of(b, c) = face_of(c, a) = index;
     return true;
@@ -199,6 +199,7 @@ class IncrementalHull {
   const std::vector<Vec3>& points_;
   const int n_;
   const double diameter_;
+  const double band_;  // a point nearer a triangle's plane than this lies on it
   std::vector<int>& face_of_step_;
   std::vector<Triangle>& triangles_;
   std::vector<int>& alive_;  // the live triangles, in the order they were made
@@ -212,13 +213,16 @@ class IncrementalHull {
 std::optional<std::vector<QhullFacet>> simplicial_facets(const std::vector<Vec3>& points) {
   const int n = static_cast<int>(points.size());
   if (n < 4 || n > kSimplicialMaxPoints) return std::nullopt;
-  double diameter = 0;
-  for (int i = 0; i < n; ++i)
+  double diameter = 0, largest = 0;
+  for (int i = 0; i < n; ++i) {
+    largest = std::max(largest, points[i].cwiseAbs().maxCoeff());
     for (int j = i + 1; j < n; ++j) diameter = std::max(diameter, (points[i] - points[j]).squaredNorm());
+  }
   diameter = std::sqrt(diameter);
-  if (!(diameter > 0) || !std::isfinite(diameter)) return std::nullopt;
+  if (!(diameter > 0) || !std::isfinite(diameter) || !std::isfinite(largest)) return std::nullopt;
+  const double band = std::max(kNearPlane * diameter, kCoordinateRounding * largest);
   static thread_local GrowingHullArrays arrays;
-  IncrementalHull hull(points, diameter, arrays);
+  IncrementalHull hull(points, diameter, band, arrays);
   if (!hull.build()) return std::nullopt;
   return hull.facets();
 }

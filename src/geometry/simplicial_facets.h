@@ -17,6 +17,7 @@
 /// more than kSimplicialMaxPoints; the caller then asks Qhull. Where it
 /// answers, the facets are those of the brute force over every triple of
 /// points that it replaced, to the bit, in the same order.
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -35,6 +36,16 @@ inline constexpr int kSimplicialMaxPoints = 128;
 /// plane through three points (1e-15), far below any face a case means to
 /// have.
 inline constexpr double kNearPlane = 1e-9;
+
+/// Far from the origin the band is wider: Qhull merges facets, or calls a
+/// point coplanar, within a multiple of its coordinates' rounding, and a
+/// unit cloud 1e10 from the origin gave 30 in 200 hulls of 100 points other
+/// facets than Qhull's with the band at kNearPlane alone. The band is at
+/// least this times the largest coordinate's magnitude: 1e4 ulps, well
+/// below kNearPlane x diameter for a cloud about the origin (where the
+/// brute force's answers stay the same to the bit), far above the
+/// thresholds Qhull derives from its rounding.
+inline constexpr double kCoordinateRounding = 1e4 * std::numeric_limits<double>::epsilon();
 
 /// The hull's facets: triangles, vertices counter-clockwise seen from
 /// outside, outward unit normals, offsets through their first vertex. Facets
