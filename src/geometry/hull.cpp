@@ -108,14 +108,15 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
   return false;
 }
 
-// The loops' steps, in loop order, grouped by the edge they run along:
+// The loops' steps, in loop order, grouped by the edge they run along
+// (their vertices are the hull's: from_faces is given valid loops only):
 // `lead[k]` is the first step along step k's edge, and for a lead, `last`
 // the last and `count` how many. Bucketed by the edge's lower vertex, whose
 // neighbours are few, so that no sort is needed: sorting the steps, once to
 // pair them into edges and twice to validate them, was a sixth of a
 // 32-point scene once Qhull was out of it.
 struct StepsByEdge {
-  std::vector<int> from, to, face;
+  std::vector<int> from, to, face;  // face: only where the edges are made
   std::vector<int> lead, last, count;
 
   void group(int vertex_count) {
@@ -309,9 +310,7 @@ std::string validate_hull(const Hull& hull) {
     const int n = hull.face_size(face);
     if (n < 3) return "a face has fewer than three vertices";
     for (int k = 0; k < n; ++k) {
-      const int from = hull.face_vertex(face, k), to = hull.face_vertex(face, (k + 1) % n);
-      if (from < 0 || from >= v || to < 0 || to >= v) return "a face names a vertex the hull does not have";
-      steps.from.push_back(from), steps.to.push_back(to), steps.face.push_back(face);
+      steps.from.push_back(hull.face_vertex(face, k)), steps.to.push_back(hull.face_vertex(face, (k + 1) % n));
     }
   }
   steps.group(v);

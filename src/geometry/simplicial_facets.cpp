@@ -31,37 +31,19 @@ MFZ_VECTOR_LANES int points_reaching(const double* x, const double* y, const dou
   return reaching;
 }
 
-// Its arrays are the thread's, kept from one hull to the next: the
-// property suite and the fuzzer build two hulls a case, and allocating
-// them each time cost an 8-point hull a fifth more than the brute force
-// over every triple that this replaced.
-struct GrowingHullArrays {
-  std::vector<int> face_of_step;  // the triangle holding each step from -> to, n x n
-  std::vector<Triangle> triangles;
-  std::vector<int> alive, seen;
-  std::vector<std::array<int, 2>> horizon;
-  std::vector<double> x, y, z;  // the points' coordinates as columns
-};
-
 // Builds the hull a point at a time (the beneath-beyond step of Barber,
 // Dobkin and Huhdanpaa's Quickhull paper, without its merging, which a
 // cloud in general position never needs). Declines, by returning false,
 // wherever a point lies within the band of a final triangle's plane, as
 // the brute force did of every supporting triple: there Qhull might merge,
-// or call the point coplanar, and decides instead. A point near a plane
-// while the hull grows only takes a side by its sign; whatever it builds
-// there, a final triangle has a point within the band, or the triangles
-// do not close and validate_hull sends the cloud to Qhull.
+// or call the point coplanar, and decides instead. The final check is
+// the verdict; a point in a live triangle's band stops the growing early
+// (add_point), which only ever sends a cloud to Qhull sooner.
 class IncrementalHull {
  public:
-  IncrementalHull(const std::vector<Vec3>& points, double diameter, double band, GrowingHullArrays& arrays)
+  IncrementalHull(const std::vector<Vec3>& points, double diameter, double band)
       : points_(points), n_(static_cast<int>(points.size())), diameter_(diameter), band_(band),
-        face_of_step_(arrays.face_of_step), triangles_(arrays.triangles), alive_(arrays.alive), seen_(arrays.seen),
-        horizon_(arrays.horizon), x_(arrays.x), y_(arrays.y), z_(arrays.z) {
-    face_of_step_.assign(static_cast<size_t>(n_) * n_, -1);
-    triangles_.clear();
-    alive_.clear();
-  }
+        face_of_step_(static_cast<size_t>(n_) * n_, -1) {}
 
   bool build() {
     std::array<int, 4> start;
@@ -209,12 +191,12 @@ class IncrementalHull {
   const int n_;
   const double diameter_;
   const double band_;  // a point nearer a triangle's plane than this lies on it
-  std::vector<int>& face_of_step_;
-  std::vector<Triangle>& triangles_;
-  std::vector<int>& alive_;  // the live triangles, in the order they were made
-  std::vector<int>& seen_;
-  std::vector<std::array<int, 2>>& horizon_;
-  std::vector<double>&x_, &y_, &z_;
+  std::vector<int> face_of_step_;  // the triangle holding each step from -> to, n x n
+  std::vector<Triangle> triangles_;
+  std::vector<int> alive_;  // the live triangles, in the order they were made
+  std::vector<int> seen_;
+  std::vector<std::array<int, 2>> horizon_;
+  std::vector<double> x_, y_, z_;  // the points' coordinates as columns
 };
 
 }  // namespace
@@ -230,8 +212,7 @@ std::optional<std::vector<QhullFacet>> simplicial_facets(const std::vector<Vec3>
   diameter = std::sqrt(diameter);
   if (!(diameter > 0) || !std::isfinite(diameter) || !std::isfinite(largest)) return std::nullopt;
   const double band = std::max(kNearPlane * diameter, kCoordinateRounding * largest);
-  static thread_local GrowingHullArrays arrays;
-  IncrementalHull hull(points, diameter, band, arrays);
+  IncrementalHull hull(points, diameter, band);
   if (!hull.build()) return std::nullopt;
   return hull.facets();
 }
