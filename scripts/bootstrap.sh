@@ -14,6 +14,7 @@ packages=(
   libeigen3-dev libccd-dev libqhull-dev  # geometry, the libccd oracle, hulls (qhull_r)
   librapidcheck-dev libgtest-dev libbenchmark-dev
   libssl-dev zip                         # SHA-1 names of fuzz inputs; seed corpus archives
+  libxxhash-dev                          # XXH3, the hash of a hull's loops (header only)
   libbullet-dev libode-dev               # peer generators
 )
 if [ "${1:-}" = "--tests" ]; then

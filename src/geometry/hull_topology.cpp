@@ -4,6 +4,10 @@
 #include <cstring>
 #include <memory>
 
+// The hash compiled in from the header: no library to link or ship.
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
 namespace mfz {
 
 namespace {
@@ -26,15 +30,15 @@ bool loops_fit(const mfz_hull& hull) {
   return true;
 }
 
-// FNV-1a over the counts, the offsets and the loops, a word at a time.
+// XXH3 over the counts, the offsets and the loops, each array at once. The
+// FNV-1a it replaces took a word at a time, each step waiting on the
+// last's multiply: on pairs cycled through the benchmark (no pair met
+// twice in a row) hashing the loops was a tenth of a 32-point call.
 uint64_t loops_hash(const mfz_hull& hull) {
-  uint64_t h = 1469598103934665603ull;
-  const auto mix = [&h](uint32_t word) { h = (h ^ word) * 1099511628211ull; };
-  mix(static_cast<uint32_t>(hull.vertex_count));
-  mix(static_cast<uint32_t>(hull.face_count));
-  for (int f = 0; f <= hull.face_count; ++f) mix(static_cast<uint32_t>(hull.face_offsets[f]));
-  for (int i = 0; i < hull.face_offsets[hull.face_count]; ++i) mix(static_cast<uint32_t>(hull.face_vertices[i]));
-  return h;
+  const int32_t counts[2] = {hull.vertex_count, hull.face_count};
+  uint64_t h = XXH3_64bits(counts, sizeof counts);
+  h = XXH3_64bits_withSeed(hull.face_offsets, sizeof(int32_t) * (hull.face_count + 1), h);
+  return XXH3_64bits_withSeed(hull.face_vertices, sizeof(int32_t) * hull.face_offsets[hull.face_count], h);
 }
 
 // The words a topology takes after its header: offsets and loops, the face
