@@ -192,6 +192,26 @@ TEST(HullMeasures, ARenumberedHullKeepsTheMeasuresItWouldTakeAgain) {
   }
 }
 
+// Scaling by a power of two copies the measures, scaled, rather than taking
+// them again; by any other factor it takes them again.
+TEST(HullMeasures, AScaledHullHasTheMeasuresItWouldTakeAgain) {
+  for (unsigned seed = 1; seed <= 20; ++seed)
+    for (const double s : {2.0, 0.5, 0x1p40, 0x1p-30, 3.0, 0.1}) {
+      const Hull h = *build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull;
+      const Hull scaled = h.scaled(s);
+      std::vector<Vec3> vertices, normals;
+      std::vector<std::vector<int>> loops(static_cast<size_t>(scaled.face_count()));
+      for (int i = 0; i < scaled.vertex_count(); ++i) vertices.push_back(scaled.vertex(i));
+      for (int f = 0; f < scaled.face_count(); ++f) {
+        normals.push_back(scaled.face_normal(f));
+        for (int k = 0; k < scaled.face_size(f); ++k) loops[f].push_back(scaled.face_vertex(f, k));
+      }
+      const Hull again = Hull::from_faces(vertices, loops, normals);
+      EXPECT_EQ(scaled.shortest_edge(), again.shortest_edge()) << "seed " << seed << ", scale " << s;
+      EXPECT_EQ(scaled.sharpest_corner(), again.sharpest_corner()) << "seed " << seed << ", scale " << s;
+    }
+}
+
 TEST(HullMeasures, TheSharpestCornerIsTheSineOfTheSmallestFaceAngle) {
   // A wedge whose slanted faces meet the base at corners of 0.1 rad.
   const double t = std::tan(0.1);
