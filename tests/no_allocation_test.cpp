@@ -117,9 +117,11 @@ std::vector<Vec3> sphere_cloud(int count, unsigned seed) {
   return points;
 }
 
-// The issue of speed asked for tens of kilobytes, not 130: the arcs and the
-// grid of large hulls (84 KB at 128 points) live in thread-local storage.
-TEST(BuiltinGenerator, ACallUsesUnder96KiBOfStack) {
+// The issue of speed asked for tens of kilobytes, not 130: the arcs of
+// large hulls (75 KB each at 128 points) and the clip's polygons (12.8 KB
+// each) live in thread-local storage. Under 64 KiB, a fibre's stack in many
+// engines' job systems; with the polygons on the stack a call took 95.5 KB.
+TEST(BuiltinGenerator, ACallUsesUnder64KiBOfStack) {
   std::vector<Scene> scenes;
   for (unsigned seed = 1; seed <= 8; ++seed) {
     CaseFile c;
@@ -143,7 +145,7 @@ TEST(BuiltinGenerator, ACallUsesUnder96KiBOfStack) {
     }
   });
   EXPECT_GT(used, 4096u);  // the measurement sees the call at all
-  EXPECT_LT(used, 96u * 1024) << used << " bytes";
+  EXPECT_LT(used, 64u * 1024) << used << " bytes";
 }
 
 TEST(AllocationCounter, SeesAnAllocation) {
