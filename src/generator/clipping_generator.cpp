@@ -134,12 +134,35 @@ class ClippedPatches {
   int count_ = 0;
 };
 
+// A call's polygons and F27's records, kept per thread and reached once per
+// call, not on the call's stack: five polygons of 512 points are 64 KB, and
+// with them on the stack a call took 95.5 KB of it where the speed issue
+// asked for tens of kilobytes (an engine's job threads and fibres run
+// collision on small stacks). Reached once: a plugin reaches its
+// thread-local storage through a call each time, and a static per
+// function, reached on every clip, cost boxes 3% more instructions. A call
+// runs to its end before the thread makes another.
+struct ClipWorkspace {
+  ClipPolygon reference, incident, clipped;
+  ClipPolygon below;  // F27's faces below the reference plane, in turn
+  ClipPolygon scratch;  // the clip's other buffer (ClipFace::scratch)
+  ClippedPatches patches;
+  int corners[kMaxPatchLoop];
+};
+
+// This thread's workspace, looked up once by each call that holds it.
+[[gnu::noinline]] ClipWorkspace& thread_workspace() {
+  static thread_local ClipWorkspace work;
+  return work;
+}
+
 // F27: the other faces of the incident hull that face the reference face and
 // reach below its plane, each clipped as the incident face is; their points
 // are added to `clipped` (each once). True when one was added.
 bool add_faces_below_reference(const PosedHull& incident, const int* done, int done_count,
                                const ClipFace& reference, const Plane& reference_plane, const ClippingSteps& steps,
-                               double world_resolution, ClipPolygon& clipped) {
+                               double world_resolution, ClipWorkspace& work) {
+  ClipPolygon& clipped = work.clipped;
   bool added = false;
   // F33: the world's rounding alone made the column a frame's choice. A face
   // 1.1e-6 rad off perpendicular stood 2.3e-10 beside a kept point, 2.1e-4
@@ -157,11 +180,9 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   // The shortcut stands for the built-in's own steps only: a mutant's
   // patch or clip is run as it is.
   const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
-  // Thread-local, not on the call's stack (generate_in_frame's polygons);
-  // a call runs to its end before the thread makes another.
-  static thread_local ClipPolygon polygon;
-  static thread_local ClippedPatches patches;
-  static thread_local int corners[kMaxPatchLoop];
+  ClipPolygon& polygon = work.below;
+  ClippedPatches& patches = work.patches;
+  int* corners = work.corners;
   patches.clear();
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
@@ -248,9 +269,10 @@ bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
 // face. The adjacent faces' planes only bound it where those faces stand
 // perpendicular; where they slope inwards the region reaches past the face and
 // point_on_a leaves the hull.
-bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+namespace {
+
+bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPolygon& scratch, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
-  static thread_local ClipPolygon scratch;  // off the stack, as generate_in_frame's polygons
   for (int k = 0; k < reference.polygon->size(); ++k) {
     Plane side;
     SideEdge edge;
@@ -261,6 +283,20 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
   }
   return true;
+}
+
+// Apart, so that its polygon is on the stack only when the caller gave no
+// scratch (a test calling the clip on its own).
+[[gnu::noinline]] bool clip_with_own_scratch(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+  ClipPolygon scratch;
+  return clip_with_scratch(reference, incident, scratch, trace);
+}
+
+}  // namespace
+
+bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace) {
+  return reference.scratch ? clip_with_scratch(reference, incident, *reference.scratch, trace)
+                           : clip_with_own_scratch(reference, incident, trace);
 }
 
 // The tutorial's last loop: each clipped point is on the incident face; its depth
@@ -452,16 +488,12 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   ClipFace& reference = flipped ? face_b : face_a;
   reference.world_resolution = world_resolution;
   const ClipFace& incident = flipped ? face_a : face_b;
-  // The polygons live in thread-local storage, not on the call's stack
-  // (12.8 KB each, sized for 512 points); a call runs to its end before the
-  // thread makes another. With the F27 polygon and the clip's scratch on
-  // the stack too, a call took 95.5 KB of it, where the speed issue asked
-  // for tens of kilobytes (an engine's job threads and fibres run
-  // collision on small stacks).
-  static thread_local ClipPolygon reference_polygon, polygon, clipped;
+  ClipWorkspace& work = thread_workspace();
+  ClipPolygon &reference_polygon = work.reference, &polygon = work.incident, &clipped = work.clipped;
   reference_polygon.clear(), clipped.clear();
   steps.face_polygon(*reference.hull, reference.index, reference_polygon);
   reference.polygon = &reference_polygon;
+  reference.scratch = &work.scratch;
   PrismSides sides;
   keep_prism_sides(reference, sides);
   reference.sides = &sides;
@@ -494,7 +526,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // edge of it to rounding (swap-symmetry, --strict --seed 20261121).
   const int from_incident_faces = clipped.size();
   if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps,
-                                std::max(resolution, world_resolution), clipped)) {
+                                std::max(resolution, world_resolution), work)) {
     if (trace) record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
     // More than the ABI holds: the incident faces' own points, as before
     // F27, rather than a reduction of points in no loop order (a 59-point

@@ -57,6 +57,9 @@ struct ClipFace {
   double world_resolution = 0;
   /// The reference prism's sides, when kept (keep_prism_sides).
   const PrismSides* sides = nullptr;
+  /// A polygon the clip against the prism may use as its other buffer;
+  /// null: it takes one on the stack.
+  ClipPolygon* scratch = nullptr;
 };
 
 /// The generator's steps, each replaceable: the project's deliberately broken

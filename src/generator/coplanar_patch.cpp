@@ -99,7 +99,7 @@ void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
 }
 
 double patch_area(const PosedHull& hull, int face) {
-  static thread_local ClipPolygon loop;  // off SAT's stack: coplanar_patch clears it
+  ClipPolygon loop;
   coplanar_patch(hull, face, loop);
   Vec3 twice = Vec3::Zero();
   for (int k = 0; k < loop.size(); ++k) twice += loop[k].cross(loop[(k + 1) % loop.size()]);
