@@ -43,7 +43,16 @@ class IncrementalHull {
  public:
   IncrementalHull(const std::vector<Vec3>& points, double diameter, double band)
       : points_(points), n_(static_cast<int>(points.size())), diameter_(diameter), band_(band),
-        face_of_step_(static_cast<size_t>(n_) * n_, -1) {}
+        face_of_step_(static_cast<size_t>(n_) * n_, -1) {
+    // Room for what a cloud in general position grows to (its final hull
+    // has 2n - 4 triangles; most points add a few and seal a few), so that
+    // the arrays are not grown step by step: an 8-point cloud's growing
+    // made eleven allocations.
+    triangles_.reserve(static_cast<size_t>(4 * n_));
+    alive_.reserve(static_cast<size_t>(2 * n_));
+    seen_.reserve(static_cast<size_t>(2 * n_));
+    horizon_.reserve(static_cast<size_t>(n_));
+  }
 
   bool build() {
     std::array<int, 4> start;
