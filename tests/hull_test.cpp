@@ -173,19 +173,25 @@ TEST(HullMeasures, ShortestEdgeAndSharpestCornerOfABox) {
   EXPECT_EQ(h.renumbered().shortest_edge(), 2);
 }
 
+// The same hull assembled again from its vertices, loops and normals: its
+// measures taken afresh.
+Hull measured_again(const Hull& h) {
+  std::vector<Vec3> vertices, normals;
+  std::vector<std::vector<int>> loops(static_cast<size_t>(h.face_count()));
+  for (int i = 0; i < h.vertex_count(); ++i) vertices.push_back(h.vertex(i));
+  for (int f = 0; f < h.face_count(); ++f) {
+    normals.push_back(h.face_normal(f));
+    for (int k = 0; k < h.face_size(f); ++k) loops[f].push_back(h.face_vertex(f, k));
+  }
+  return Hull::from_faces(vertices, loops, normals);
+}
+
 // Renumbering copies the measures rather than taking them again: they must
 // be what taking them again gives, to the bit.
 TEST(HullMeasures, ARenumberedHullKeepsTheMeasuresItWouldTakeAgain) {
   for (unsigned seed = 1; seed <= 20; ++seed) {
     const Hull r = build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull->renumbered();
-    std::vector<Vec3> vertices, normals;
-    std::vector<std::vector<int>> loops(static_cast<size_t>(r.face_count()));
-    for (int i = 0; i < r.vertex_count(); ++i) vertices.push_back(r.vertex(i));
-    for (int f = 0; f < r.face_count(); ++f) {
-      normals.push_back(r.face_normal(f));
-      for (int k = 0; k < r.face_size(f); ++k) loops[f].push_back(r.face_vertex(f, k));
-    }
-    const Hull again = Hull::from_faces(vertices, loops, normals);
+    const Hull again = measured_again(r);
     EXPECT_EQ(r.shortest_edge(), again.shortest_edge()) << "seed " << seed;
     EXPECT_EQ(r.sharpest_corner(), again.sharpest_corner()) << "seed " << seed;
     EXPECT_EQ(r.diameter(), again.diameter()) << "seed " << seed;
@@ -197,16 +203,8 @@ TEST(HullMeasures, ARenumberedHullKeepsTheMeasuresItWouldTakeAgain) {
 TEST(HullMeasures, AScaledHullHasTheMeasuresItWouldTakeAgain) {
   for (unsigned seed = 1; seed <= 20; ++seed)
     for (const double s : {2.0, 0.5, 0x1p40, 0x1p-30, 3.0, 0.1}) {
-      const Hull h = *build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull;
-      const Hull scaled = h.scaled(s);
-      std::vector<Vec3> vertices, normals;
-      std::vector<std::vector<int>> loops(static_cast<size_t>(scaled.face_count()));
-      for (int i = 0; i < scaled.vertex_count(); ++i) vertices.push_back(scaled.vertex(i));
-      for (int f = 0; f < scaled.face_count(); ++f) {
-        normals.push_back(scaled.face_normal(f));
-        for (int k = 0; k < scaled.face_size(f); ++k) loops[f].push_back(scaled.face_vertex(f, k));
-      }
-      const Hull again = Hull::from_faces(vertices, loops, normals);
+      const Hull scaled = build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull->scaled(s);
+      const Hull again = measured_again(scaled);
       EXPECT_EQ(scaled.shortest_edge(), again.shortest_edge()) << "seed " << seed << ", scale " << s;
       EXPECT_EQ(scaled.sharpest_corner(), again.sharpest_corner()) << "seed " << seed << ", scale " << s;
     }
