@@ -199,10 +199,12 @@ TEST(HullMeasures, ARenumberedHullKeepsTheMeasuresItWouldTakeAgain) {
 }
 
 // Scaling by a power of two copies the measures, scaled, rather than taking
-// them again; by any other factor it takes them again.
+// them again; by any other factor it takes them again, and so it does where
+// the squared lengths would leave the normal doubles (2^-530: subnormal;
+// 2^515: past the largest), which round apart from the copied measures.
 TEST(HullMeasures, AScaledHullHasTheMeasuresItWouldTakeAgain) {
   for (unsigned seed = 1; seed <= 20; ++seed)
-    for (const double s : {2.0, 0.5, 0x1p40, 0x1p-30, 3.0, 0.1}) {
+    for (const double s : {2.0, 0.5, 0x1p40, 0x1p-30, 3.0, 0.1, 0x1p-530, 0x1p515}) {
       const Hull scaled = build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull->scaled(s);
       const Hull again = measured_again(scaled);
       EXPECT_EQ(scaled.shortest_edge(), again.shortest_edge()) << "seed " << seed << ", scale " << s;
