@@ -80,7 +80,7 @@ done
 # Correct generators: the variants that choose differently in ties at the
 # contract level (each under the profile it declares), the built-in and its
 # plugin at the strict level.
-for g in reducing last_incident_face b_reference_on_face_ties reversed_order float_precision face_bias \
+for g in reducing last_incident_face b_reference_on_face_ties reversed_order float_precision face_bias stale_separating_normal \
          "$plugins/libmanifuzz_clipping.so --strict" "builtin --strict"; do
   case "$g" in *.so*|builtin*) ;; *) g="$plugins/libmfz_mutant_$g.so" ;; esac
   out=$("$manifuzz" check --generator $g --cases "$correct_budget" --seed "$seed" --out "$scratch/ok" --quiet 2>&1)
