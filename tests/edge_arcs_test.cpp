@@ -185,18 +185,16 @@ void expect_same_answer(const SatResult& pruned, const SatResult& every, double 
 // frames): the pruned pairs never change the depth or the side.
 RC_GTEST_PROP(SatPruning, GivesTheDepthThatTryingEveryEdgePairGives, ()) {
   const props::GeneratedCase c = *props::any_case();
-  HullBuild a = build_hull(c.file.points_a), b = build_hull(c.file.points_b);
-  RC_PRE(a.hull.has_value() && b.hull.has_value());
-  const mfz_hull va = a.hull->view(), vb = b.hull->view();
-  Pose pa = c.file.pose_a, pb = c.file.pose_b;
-  pa.orientation.normalize();
-  pb.orientation.normalize();
-  const PosedHull posed_a(va, pa), posed_b(vb, pb);
+  const test::PosedCase posed(c.file);
+  RC_PRE(posed.built);
+  const PosedHull posed_a = posed.a(), posed_b = posed.b();
   RC_TAG(c.placement);
   double extent = 0;
-  for (int i = 0; i < va.vertex_count; ++i) extent = std::max(extent, posed_a.world_vertex(i).cwiseAbs().maxCoeff());
-  for (int i = 0; i < vb.vertex_count; ++i) extent = std::max(extent, posed_b.world_vertex(i).cwiseAbs().maxCoeff());
-  const double scale = std::max(a.hull->diameter(), b.hull->diameter());
+  for (int i = 0; i < posed_a.vertex_count(); ++i)
+    extent = std::max(extent, posed_a.world_vertex(i).cwiseAbs().maxCoeff());
+  for (int i = 0; i < posed_b.vertex_count(); ++i)
+    extent = std::max(extent, posed_b.world_vertex(i).cwiseAbs().maxCoeff());
+  const double scale = std::max(posed.hull_a->diameter(), posed.hull_b->diameter());
   const double touching = tol::kTouching * scale + tol::kWorldUlps * std::numeric_limits<double>::epsilon() * extent;
   expect_same_answer(run_sat(posed_a, posed_b), run_sat_every_pair(posed_a, posed_b), extent, touching);
 }
@@ -217,26 +215,15 @@ std::vector<Vec3> prism_points(int sides) {
 // prisms, whose parallel side edges tie.
 TEST(SatPruning, LargeHullsBoundedByRowsFindTheAxisEveryPairFinds) {
   std::mt19937 random(20261124);
-  std::uniform_real_distribution<double> unit(0, 1);
-  std::normal_distribution<double> gauss;
-  const auto direction = [&] { return Vec3(gauss(random), gauss(random), gauss(random)).normalized(); };
   int edge_axes = 0, overlapping = 0;
   for (unsigned seed = 1; seed <= 96; ++seed) {
     const int sizes[] = {24, 48, 96, 128};
     // Every third A a prism of 12 to 64 sides: its rims' arcs are quarter
     // circles, whose least along a direction is often between their ends.
     const bool prism = seed % 3 == 0;
-    std::vector<Vec3> points_a = prism ? prism_points(12 + seed % 53) : test::sphere_points(sizes[seed % 4], seed);
-    std::vector<Vec3> points_b = test::sphere_points(sizes[(seed / 4) % 4], 1000 + seed);
-    const double radius_b = 0.5 + unit(random);
-    for (Vec3& p : points_b) p *= radius_b;
-    const Hull a = *build_hull(points_a).hull, b = *build_hull(points_b).hull;
-    const mfz_hull va = a.view(), vb = b.view();
-    // Centres from touching (1 + radius_b) to nearly concentric.
-    const double apart = (1 + radius_b) * (0.15 + 0.85 * unit(random));
-    const Pose pa{Vec3::Zero(), test::about(direction(), 3 * unit(random))};
-    const Pose pb{apart * direction(), test::about(direction(), 3 * unit(random))};
-    const PosedHull posed_a(va, pa), posed_b(vb, pb);
+    const test::OverlappingClouds clouds(prism ? prism_points(12 + seed % 53) : test::sphere_points(sizes[seed % 4], seed),
+                                         sizes[(seed / 4) % 4], 1000 + seed, random);
+    const PosedHull posed_a(clouds.view_a, clouds.pose_a), posed_b(clouds.view_b, clouds.pose_b);
     const SatResult bounded = run_sat(posed_a, posed_b), every = run_sat_every_pair(posed_a, posed_b);
     EXPECT_EQ(bounded.separated, every.separated) << "seed " << seed;
     if (every.separated) continue;  // any separating axis will do

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "generator/coplanar_patch.h"
@@ -288,7 +289,15 @@ int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
                                                   : hull.support_vertex(direction);
 }
 
-SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
+// `hint_overlap`: the overlap along the axis that answered the pair's last
+// call (infinite without one), which bounds the depth this call finds: no
+// axis overlaps less than the penetration depth, and the axis SAT picks
+// overlaps at most F3's bias or F14's slack more than the least, each less
+// than the tie room. So the hint plus the room is a ceiling on the depth
+// found, and an axis bounded past the ceiling by the room again could not
+// have won or tied, whatever the axes measured before it. (With the hint
+// less the room, SatHint.* finds answers that differ.)
+SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overlap) {
   // Pairs of small hulls bound their edge pairs without the balls.
   const bool scan_pairs = a.vertex_count() <= kScanPairVertices && b.vertex_count() <= kScanPairVertices;
   HullSummary sa = summary_of(a), sb = summary_of(b);
@@ -298,7 +307,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   const double tie_room = tol::kEdgeAxisBias * 2 * std::max(sa.reach, sb.reach) + rounding;
   SatResult best;
   best.depth = std::numeric_limits<double>::infinity();
-  const auto hopeless = [&](double lower) { return lower > best.depth + tie_room; };
+  // A separating axis is never left out by the hint: the ceiling is at
+  // least the room above zero.
+  const double ceiling = std::max(0.0, hint_overlap) + tie_room;
+  const auto hopeless = [&](double lower) { return lower > std::min(best.depth, ceiling) + tie_room; };
   bool balls = false;  // sa.inner and sb.inner measured
   const auto measure_balls = [&] {
     if (!balls) add_inner_ball(a, sa), add_inner_ball(b, sb), balls = true;
@@ -422,7 +434,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   // vector lanes, by the best depth when the phase starts: a shallower axis
   // found later does not tighten the rows after it, which costs less than
   // bounding each row in turn did (a fifth of a 128-point call).
-  const double past = best.depth + tie_room;
+  const double past = std::min(best.depth, ceiling) + tie_room;
   double row_margin[kMaxArcs];
   arcs_above(arcs_a, sb.centre, past - sb.inner, centres, past - sa.inner - sb.inner, row_margin);
   // B's arcs bounded the same way, each over its arc negated (where -m
@@ -446,9 +458,97 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b) {
   return best;
 }
 
+// The hint's axis in this call's poses, and its overlap (the lesser of the
+// two directions: no less than the penetration depth either way). Returns
+// false, with `separated` the answer, where the axis separates the hulls by
+// more than their projections' rounding: SAT would find them apart too (the
+// axis of greatest gap is among its candidates), so whether they collide
+// never depends on the hint. A hint whose features the hulls lack, or
+// edges that have turned parallel, bounds nothing.
+bool hint_overlap(const PosedHull& a, const PosedHull& b, const AxisHint& hint, double& overlap,
+                  SatResult& separated) {
+  Vec3 axis;
+  if (hint.kind == AxisKind::face_a) {
+    if (hint.feature_a < 0 || hint.feature_a >= a.face_count()) return true;
+    axis = a.world_face_normal(hint.feature_a);
+  } else if (hint.kind == AxisKind::face_b) {
+    if (hint.feature_b < 0 || hint.feature_b >= b.face_count()) return true;
+    axis = b.world_face_normal(hint.feature_b);
+  } else {
+    const HullTopology *ta = a.topology(), *tb = b.topology();
+    if (!ta || !tb || hint.feature_a < 0 || hint.feature_a >= ta->edge_count() || hint.feature_b < 0 ||
+        hint.feature_b >= tb->edge_count())
+      return true;
+    const TopologyEdge &x = ta->edge(hint.feature_a), &y = tb->edge(hint.feature_b);
+    const Vec3 edge_a = a.world_vertex(x.v1) - a.world_vertex(x.v0);
+    const Vec3 edge_b = b.world_vertex(y.v1) - b.world_vertex(y.v0);
+    axis = edge_a.cross(edge_b);
+    const double length = axis.norm();
+    if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+    axis /= length;
+  }
+  const Interval ia = a.project(axis), ib = b.project(axis);
+  const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;
+  const double rounding = 4 * tol::world_rounding(std::max(a.reach_from_origin(), b.reach_from_origin()));
+  if (b_above < -rounding || b_below < -rounding) {
+    const bool along = b_above <= b_below;
+    separated = {true, along ? axis : Vec3(-axis), along ? b_above : b_below, hint.kind, hint.feature_a,
+                 hint.feature_b};
+    return false;
+  }
+  overlap = std::min(b_above, b_below);
+  return true;
+}
+
+// The axis that answered a pair's last call, per thread, in a table indexed
+// by a hash of the hulls' vertex addresses. An address is no proof of the
+// same hull (a caller's next hull often lands where the last was freed),
+// and need not be: any axis's overlap bounds the depth, so a stranger's
+// hint costs one projection and changes no answer.
+struct RememberedAxis {
+  const mfz_vec3* vertices_a = nullptr;
+  const mfz_vec3* vertices_b = nullptr;
+  int32_t count_a = 0, count_b = 0;
+  AxisHint hint;
+
+  bool same_pair(const PosedHull& a, const PosedHull& b) const {
+    return vertices_a == a.abi_hull().vertices && vertices_b == b.abi_hull().vertices &&
+           count_a == a.vertex_count() && count_b == b.vertex_count();
+  }
+  void remember(const PosedHull& a, const PosedHull& b, const AxisHint& axis) {
+    vertices_a = a.abi_hull().vertices, vertices_b = b.abi_hull().vertices;
+    count_a = a.vertex_count(), count_b = b.vertex_count(), hint = axis;
+  }
+};
+
+// 4,096 pairs: the benchmark's 1,024 per family, and a property case's
+// relations, each with its own copies of the hulls.
+constexpr int kRememberedPairs = 4096;
+
+RememberedAxis& remembered_axis(const PosedHull& a, const PosedHull& b) {
+  static thread_local RememberedAxis table[kRememberedPairs];
+  const auto address = [](const mfz_vec3* p) { return static_cast<uint64_t>(reinterpret_cast<uintptr_t>(p)); };
+  const uint64_t key = address(a.abi_hull().vertices) * 0x9E3779B97F4A7C15ull ^
+                       address(b.abi_hull().vertices) * 0xC2B2AE3D27D4EB4Full;
+  return table[(key >> 32) % kRememberedPairs];
+}
+
 }  // namespace
 
-SatResult run_sat(const PosedHull& a, const PosedHull& b) { return bounded_sat(a, b); }
+SatResult run_sat_with_hint(const PosedHull& a, const PosedHull& b, const AxisHint& hint) {
+  double overlap = std::numeric_limits<double>::infinity();
+  SatResult separated;
+  if (!hint_overlap(a, b, hint, overlap, separated)) return separated;
+  return bounded_sat(a, b, overlap);
+}
+
+SatResult run_sat(const PosedHull& a, const PosedHull& b) {
+  RememberedAxis& remembered = remembered_axis(a, b);
+  const bool same_pair = remembered.same_pair(a, b);
+  const SatResult sat = run_sat_with_hint(a, b, same_pair ? remembered.hint : AxisHint{});
+  remembered.remember(a, b, {sat.kind, sat.feature_a, sat.feature_b});
+  return sat;
+}
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_every_pair(a, b); }
 
 SatResult least_edge_axis(const PosedHull& a, const PosedHull& b) {

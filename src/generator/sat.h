@@ -21,6 +21,13 @@ struct SatResult {
   int feature_b = -1;  ///< face of B, or edge of B
 };
 
+/// The features whose axis answered a pair's last call: SAT measures it
+/// first, and an overlap no smaller leaves every other axis out (sat.cpp).
+struct AxisHint {
+  AxisKind kind = AxisKind::face_a;
+  int feature_a = -1, feature_b = -1;  ///< as in SatResult; -1 for none
+};
+
 /// Overlap of A and B along a unit world axis, and which way B lies.
 /// Returns the smaller of the two overlaps; `b_along_axis` tells whether it is
 /// the one with B on the +axis side (so the normal from A to B is +axis).
@@ -35,7 +42,17 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// arcs of B that arc_bounds.h leaves in on large hulls), and an axis is
 /// measured in full only when a cheap lower bound on its overlap leaves it
 /// a chance (sat.cpp).
+///
+/// The axis that answered the same pair's last call on this thread is tried
+/// first (the pair is known by the addresses of its hulls' vertices): where
+/// it separates the hulls by more than rounding, SAT ends there, and
+/// otherwise its overlap bounds every other axis from the start. The answer
+/// is the one without the hint, to the bit, except the separating axis
+/// reported for hulls apart, which the contract leaves free.
 SatResult run_sat(const PosedHull& a, const PosedHull& b);
+/// run_sat with `hint` for the pair's last axis, whatever the pair's
+/// history; no hint (a feature -1) gives the answer from nothing.
+SatResult run_sat_with_hint(const PosedHull& a, const PosedHull& b, const AxisHint& hint);
 /// Every axis measured in full and every edge pair tried: what the pruning
 /// and the bounds must agree with.
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b);

@@ -78,6 +78,8 @@ class PosedHull {
     return topology_;
   }
 
+  /// The hull as the caller passed it.
+  const mfz_hull& abi_hull() const { return hull_; }
   int vertex_count() const { return hull_.vertex_count; }
   int face_count() const { return hull_.face_count; }
   int face_size(int f) const { return hull_.face_offsets[f + 1] - hull_.face_offsets[f]; }

@@ -1,0 +1,164 @@
+// SAT's hint: the axis that answered a pair's last call, measured first.
+// It may end SAT where it separates the hulls, and bounds every other axis
+// where it does not; either way the answer is the one found without it, so
+// a generator's answer never depends on what it was asked before (a
+// finding must replay in a fresh process).
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "families.h"
+#include "generator/sat.h"
+#include "geometry/hull.h"
+#include "test_support.h"
+
+namespace mfz {
+namespace {
+
+// The hints a pair can meet: each face of either hull, edge pairs spread
+// over the whole grid (the winning one among them), and the pair's own
+// answer. At most about `budget` in all, spread evenly.
+std::vector<AxisHint> hints_for(const PosedHull& a, const PosedHull& b, const SatResult& answer, int budget) {
+  std::vector<AxisHint> hints = {{answer.kind, answer.feature_a, answer.feature_b}};
+  const int faces_a = a.face_count(), faces_b = b.face_count();
+  for (int f = 0; f < faces_a; f += std::max(1, faces_a / (budget / 3))) hints.push_back({AxisKind::face_a, f, -1});
+  for (int f = 0; f < faces_b; f += std::max(1, faces_b / (budget / 3))) hints.push_back({AxisKind::face_b, -1, f});
+  const HullTopology *ta = a.topology(), *tb = b.topology();
+  if (!ta || !tb) return hints;
+  const long pairs = long{ta->edge_count()} * tb->edge_count();
+  const long stride = std::max(1L, pairs / (budget / 3));
+  for (long k = 0; k < pairs; k += stride)
+    hints.push_back({AxisKind::edge_edge, static_cast<int>(k / tb->edge_count()), static_cast<int>(k % tb->edge_count())});
+  return hints;
+}
+
+// The answer with the hint is the answer without it: to the bit where the
+// hulls overlap, and apart where they are apart (with any separating axis).
+// Returns how many hints were tried.
+int expect_every_hint_gives(const PosedHull& a, const PosedHull& b, int budget) {
+  const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
+  const std::vector<AxisHint> hints = hints_for(a, b, cold, budget);
+  for (const AxisHint& hint : hints) {
+    const SatResult warm = run_sat_with_hint(a, b, hint);
+    RC_LOG() << "hint " << axis_kind_name(hint.kind) << " " << hint.feature_a << "/" << hint.feature_b << ": "
+             << axis_kind_name(warm.kind) << " " << warm.feature_a << "/" << warm.feature_b << " depth " << warm.depth
+             << "; without: " << axis_kind_name(cold.kind) << " " << cold.feature_a << "/" << cold.feature_b
+             << " depth " << cold.depth << "\n";
+    RC_ASSERT(warm.separated == cold.separated);
+    if (cold.separated) continue;
+    RC_ASSERT(warm.kind == cold.kind);
+    RC_ASSERT(warm.feature_a == cold.feature_a);
+    RC_ASSERT(warm.feature_b == cold.feature_b);
+    RC_ASSERT(warm.depth == cold.depth);
+    RC_ASSERT(warm.normal == cold.normal);
+  }
+  return static_cast<int>(hints.size());
+}
+
+// Every family of the property suite, touching and far frames included.
+RC_GTEST_PROP(SatHint, AnyHintGivesTheAnswerFoundWithoutOne, ()) {
+  const props::GeneratedCase c = *props::any_case();
+  const test::PosedCase posed(c.file);
+  RC_PRE(posed.built);
+  RC_TAG(c.placement);
+  expect_every_hint_gives(posed.a(), posed.b(), 24);
+}
+
+// Clouds of 24 to 128 points, where faces are bounded by balls and climbs
+// and whole rows of edge pairs by their arcs (the hint bounds those too),
+// overlapping from touching to nearly concentric; and each pair's hints
+// taken from the pair a little further on, as a moving pair meets them.
+TEST(SatHint, LargeHullsGiveTheAnswerFoundWithoutAHint) {
+  std::mt19937 random(20261127);
+  std::normal_distribution<double> gauss;
+  const auto direction = [&] { return Vec3(gauss(random), gauss(random), gauss(random)).normalized(); };
+  int tried = 0, edge_answers = 0, moved_hints = 0;
+  for (unsigned seed = 1; seed <= 40; ++seed) {
+    const int sizes[] = {24, 48, 96, 128};
+    const test::OverlappingClouds clouds(test::sphere_points(sizes[seed % 4], seed), sizes[(seed / 4) % 4],
+                                         1000 + seed, random);
+    const PosedHull posed_a(clouds.view_a, clouds.pose_a), posed_b(clouds.view_b, clouds.pose_b);
+    tried += expect_every_hint_gives(posed_a, posed_b, 60);
+    const SatResult here = run_sat_with_hint(posed_a, posed_b, AxisHint{});
+    edge_answers += !here.separated && here.kind == AxisKind::edge_edge;
+    // The pair a step further on, turned a little, with this pose's axis.
+    const Pose pb_next{(clouds.apart * 0.97) * clouds.towards,
+                       test::about(direction(), 0.02) * clouds.pose_b.orientation};
+    const PosedHull next_b(clouds.view_b, pb_next);
+    const SatResult next = run_sat_with_hint(posed_a, next_b, AxisHint{});
+    const SatResult hinted = run_sat_with_hint(posed_a, next_b, {here.kind, here.feature_a, here.feature_b});
+    EXPECT_EQ(hinted.separated, next.separated) << "seed " << seed;
+    if (next.separated) continue;
+    ++moved_hints;
+    EXPECT_EQ(hinted.kind, next.kind) << "seed " << seed;
+    EXPECT_EQ(hinted.feature_a, next.feature_a) << "seed " << seed;
+    EXPECT_EQ(hinted.feature_b, next.feature_b) << "seed " << seed;
+    EXPECT_EQ(hinted.depth, next.depth) << "seed " << seed;
+  }
+  EXPECT_GT(tried, 2000);
+  EXPECT_GT(edge_answers, 5) << "edge pairs should answer some of the pairs";
+  EXPECT_GT(moved_hints, 30);
+}
+
+struct BoxPair {
+  Hull hull_a = *build_hull(test::box_points(1, 1, 1)).hull;
+  Hull hull_b = *build_hull(test::box_points(1, 1, 1)).hull;
+  mfz_hull a = hull_a.view(), b = hull_b.view();
+  Pose pose_a{Vec3::Zero(), Quat::Identity()};
+};
+
+// A hint that separates the hulls answers at once, with its own axis, though
+// SAT from nothing finds an earlier one in its order.
+TEST(SatHint, ASeparatingHintAnswersWithItsOwnAxis) {
+  const BoxPair boxes;
+  const Pose pose_b{Vec3(3, 3, 0), Quat::Identity()};
+  const PosedHull a(boxes.a, boxes.pose_a), b(boxes.b, pose_b);
+  const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
+  ASSERT_TRUE(cold.separated);
+  ASSERT_EQ(cold.kind, AxisKind::face_a) << "A's faces come first";
+  int later = -1;  // a face of B along the other axis that separates them
+  for (int f = 0; f < b.face_count() && later < 0; ++f) {
+    const Vec3 n = b.world_face_normal(f);
+    if (std::abs(n.dot(cold.normal)) < 0.5 && std::abs(n.z()) < 0.5) later = f;
+  }
+  ASSERT_GE(later, 0);
+  const SatResult warm = run_sat_with_hint(a, b, {AxisKind::face_b, -1, later});
+  EXPECT_TRUE(warm.separated);
+  EXPECT_EQ(warm.kind, AxisKind::face_b);
+  EXPECT_EQ(warm.feature_b, later);
+  EXPECT_LT(warm.depth, 0);
+}
+
+// run_sat remembers each pair's axis: the same hulls called again start from
+// it, so the pair apart along x, then moved to be apart along x and y, is
+// still answered along x, where SAT from nothing would take y's face first
+// (or the other way about).
+TEST(SatHint, TheSamePairCalledAgainStartsFromItsLastAxis) {
+  const BoxPair boxes;
+  const PosedHull a(boxes.a, boxes.pose_a);
+  const Pose diagonal{Vec3(3, 3, 0), Quat::Identity()};
+  const SatResult cold = run_sat_with_hint(a, PosedHull(boxes.b, diagonal), AxisHint{});
+  ASSERT_TRUE(cold.separated);
+  // First apart along the axis SAT from nothing does not take.
+  const Vec3 first_offset = std::abs(cold.normal.x()) > 0.5 ? Vec3(0, 3, 0) : Vec3(3, 0, 0);
+  const SatResult first = run_sat(a, PosedHull(boxes.b, {first_offset, Quat::Identity()}));
+  ASSERT_TRUE(first.separated);
+  const SatResult again = run_sat(a, PosedHull(boxes.b, diagonal));
+  EXPECT_TRUE(again.separated);
+  EXPECT_EQ(again.kind, first.kind);
+  EXPECT_EQ(again.feature_a, first.feature_a);
+  EXPECT_EQ(again.feature_b, first.feature_b);
+  EXPECT_NE(again.feature_a, cold.feature_a) << "SAT from nothing takes another face";
+  // Another pair of hulls (the same box built again, elsewhere in memory)
+  // has no hint.
+  const Hull other = *build_hull(test::box_points(1, 1, 1)).hull;
+  const mfz_hull other_view = other.view();
+  const SatResult stranger = run_sat(a, PosedHull(other_view, diagonal));
+  EXPECT_EQ(stranger.feature_a, cold.feature_a);
+}
+
+}  // namespace
+}  // namespace mfz
