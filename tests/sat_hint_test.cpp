@@ -160,5 +160,26 @@ TEST(SatHint, TheSamePairCalledAgainStartsFromItsLastAxis) {
   EXPECT_EQ(stranger.feature_a, cold.feature_a);
 }
 
+// F43: a tetrahedron 1.1e-16 behind a face of A, apart along that face's
+// normal reversed, which SAT without a hint measures first. With that face
+// as the hint, the faces were bounded by it from the first on, in their
+// own directions only: the face was left out, a later one overlapped by
+// 1.1e-16, and the second call said colliding. Every hint must say apart.
+TEST(SatHint, AFaceThatSeparatesReversedAtTouchingIsMeasuredWhateverTheHint) {
+  const CaseParse parsed = read_case_file(
+      test::corpus_path("regressions/f43-the-pair-s-last-axis-left-out-a-face-that-separated-reversed-at-touching.case"));
+  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
+  const test::PosedCase posed(*parsed.value);
+  ASSERT_TRUE(posed.built);
+  const PosedHull a = posed.a(), b = posed.b();
+  const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
+  ASSERT_TRUE(cold.separated);
+  ASSERT_EQ(cold.kind, AxisKind::face_a);
+  for (int f = 0; f < a.face_count(); ++f)
+    EXPECT_TRUE(run_sat_with_hint(a, b, {AxisKind::face_a, f, -1}).separated) << "hint: face " << f << " of A";
+  for (int f = 0; f < b.face_count(); ++f)
+    EXPECT_TRUE(run_sat_with_hint(a, b, {AxisKind::face_b, -1, f}).separated) << "hint: face " << f << " of B";
+}
+
 }  // namespace
 }  // namespace mfz
