@@ -495,17 +495,13 @@ bool hint_overlap(const PosedHull& a, const PosedHull& b, const AxisHint& hint, 
     if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
     axis /= length;
   }
-  const Interval ia = a.project(axis), ib = b.project(axis);
-  const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;
+  bool b_along_axis = true;
+  overlap = overlap_along(a, b, axis, b_along_axis);
   const double rounding = 4 * tol::world_rounding(std::max(a.reach_from_origin(), b.reach_from_origin()));
-  if (b_above < -rounding || b_below < -rounding) {
-    const bool along = b_above <= b_below;
-    separated = {true, along ? axis : Vec3(-axis), along ? b_above : b_below, hint.kind, hint.feature_a,
-                 hint.feature_b};
-    return false;
-  }
-  overlap = std::min(b_above, b_below);
-  return true;
+  if (std::isnan(overlap)) overlap = std::numeric_limits<double>::infinity();  // bounds nothing
+  if (!(overlap < -rounding)) return true;
+  separated = {true, b_along_axis ? axis : Vec3(-axis), overlap, hint.kind, hint.feature_a, hint.feature_b};
+  return false;
 }
 
 // The axis that answered a pair's last call, per thread, in a table indexed

@@ -22,7 +22,7 @@ struct SatResult {
 };
 
 /// The features whose axis answered a pair's last call: SAT measures it
-/// first, and an overlap no smaller leaves every other axis out (sat.cpp).
+/// first, and its overlap caps the edge pairs' bounds (sat.cpp).
 struct AxisHint {
   AxisKind kind = AxisKind::face_a;
   int feature_a = -1, feature_b = -1;  ///< as in SatResult; -1 for none
@@ -46,7 +46,8 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// The axis that answered the same pair's last call on this thread is tried
 /// first (the pair is known by the addresses of its hulls' vertices): where
 /// it separates the hulls by more than rounding, SAT ends there, and
-/// otherwise its overlap bounds every other axis from the start. The answer
+/// otherwise its overlap caps the edge pairs' bounds (not the faces':
+/// F43). The answer
 /// is the one without the hint, to the bit, except the separating axis
 /// reported for hulls apart, which the contract leaves free.
 SatResult run_sat(const PosedHull& a, const PosedHull& b);
