@@ -96,10 +96,10 @@ CaseOutcome check_case(const CaseFile& c, GeneratorSession& generator, const Sel
     return outcome;
   }
   const OracleAnswers oracles = consult_oracles(scene);
-  const Verdict verdict = check_manifold(scene, oracles, status, manifold, *profile,
-                                         selection.pass_details ? PassDetails::written : PassDetails::left_out);
+  // Made in place: a copy of the verdict was ten allocations a case.
+  const Verdict& verdict = outcome.verdict.emplace(check_manifold(
+      scene, oracles, status, manifold, *profile, selection.pass_details ? PassDetails::written : PassDetails::left_out));
   outcome.manifold = manifold;
-  outcome.verdict = verdict;
   outcome.tags = tags_of(scene, oracles, manifold);
   if (verdict.refused()) {
     outcome.finding = Finding{"refused", "status " + std::to_string(status), {}};

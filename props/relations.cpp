@@ -61,8 +61,8 @@ std::optional<Finding> run(GeneratorSession& g, const Posed& p, mfz_manifold& ou
   if (auto f = call(g, p, out, relation, in)) return f;
   Scene scene = posed_scene(*p.a, p.pose_a, *p.b, p.pose_b);
   scene.precision_epsilon = in.profile.precision_epsilon;
-  const Verdict v = check_transformed_manifold(scene, in.oracles, depth_factor, out, in.profile);
-  if (const InvariantCheck* bad = v.first_violation()) {
+  const std::optional<InvariantCheck> bad = check_transformed_manifold(scene, in.oracles, depth_factor, out, in.profile);
+  if (bad) {
     char margin[96];
     std::snprintf(margin, sizeof margin, " (error %.3g L, tol %.3g L)", bad->error, bad->tolerance);
     return Finding{relation, "the " + relation + " run fails " + bad->name + ": " + bad->detail + margin, {},
@@ -87,6 +87,7 @@ struct Answer {
 
 Answer answer_of(const mfz_manifold& m) {
   Answer a{m.colliding == 1, to_vec(m.normal), -m.penetration, {}};
+  a.contacts.reserve(static_cast<size_t>(std::clamp(m.contact_count, 0, MFZ_MAX_CONTACTS)));
   for (int i = 0; i < m.contact_count && i < MFZ_MAX_CONTACTS; ++i)
     a.contacts.push_back({to_vec(m.contacts[i].point_on_a), to_vec(m.contacts[i].point_on_b), m.contacts[i].penetration});
   return a;
@@ -110,6 +111,7 @@ double distance_to_hull_of(const Vec3& p, const std::vector<Vec3>& points) {
 bool within_region(const std::vector<Contact>& x, const std::vector<Contact>& y, double tol, double depth_tol,
                    std::string& why) {
   std::vector<Vec3> ya, yb;
+  ya.reserve(y.size()), yb.reserve(y.size());
   for (const Contact& c : y) ya.push_back(c.on_a), yb.push_back(c.on_b);
   for (size_t i = 0; i < x.size(); ++i) {
     if (std::abs(x[i].penetration) <= depth_tol) continue;

@@ -195,6 +195,30 @@ TEST_F(InvariantFires, APassingCheckIsDescribedOnlyWhenItsDetailIsWritten) {
   EXPECT_EQ(detail_of(wrong, PassDetails::left_out, "depth-exact"), "depth 0.2, exact 0.1");
 }
 
+// A relation's run is reported by its first failing check, in the
+// contract's order, with that check's detail: a contact shifted 0.05 up
+// under a normal turned sideways fails pair-consistency before on-surface,
+// a deeper depth fails depth-exact, and a right manifold fails nothing.
+TEST_F(InvariantFires, ATransformedRunIsReportedByItsFirstFailingCheck) {
+  EXPECT_FALSE(check_transformed_manifold(run_.scene, run_.oracles, 1, good()));
+  mfz_manifold off = good();
+  shift_contact(off, 0, Vec3(0, 0, 0.05));
+  EXPECT_EQ(status_of("on-surface", off), CheckStatus::fail);
+  off.normal = to_abi(Vec3(1, 0, 0));
+  EXPECT_EQ(status_of("pair-consistency", off), CheckStatus::fail);
+  const std::optional<InvariantCheck> first = check_transformed_manifold(run_.scene, run_.oracles, 1, off);
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->name, "pair-consistency");
+  EXPECT_EQ(first->status, CheckStatus::fail);
+  EXPECT_NE(first->detail, "");
+  mfz_manifold deeper = good();
+  deeper.penetration = -0.2;
+  const std::optional<InvariantCheck> depth = check_transformed_manifold(run_.scene, run_.oracles, 1, deeper);
+  ASSERT_TRUE(depth);
+  EXPECT_EQ(depth->name, "depth-exact");
+  EXPECT_EQ(depth->detail, "depth 0.2, exact 0.1");
+}
+
 TEST(InvariantVerdict, EveryContractInvariantIsChecked) {
   const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
                                                         {Vec3(0, 0, 1.5), Quat::Identity()}));

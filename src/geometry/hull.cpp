@@ -115,6 +115,10 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
 // neighbours are few, so that no sort is needed: sorting the steps, once to
 // pair them into edges and twice to validate them, was a sixth of a
 // 32-point scene once Qhull was out of it.
+//
+// Each user keeps one per thread and clears it, so that its arrays keep
+// their room from hull to hull: a hull is grouped twice as it is built, and
+// the nine allocations of the two were a tenth of an 8-point hull's build.
 struct StepsByEdge {
   std::vector<int> from, to, face;  // face: only where the edges are made
   int *lead = nullptr, *last = nullptr, *count = nullptr;  // into `grouped`
@@ -122,14 +126,14 @@ struct StepsByEdge {
   StepsByEdge() = default;
   StepsByEdge(const StepsByEdge&) = delete;  // the pointers are into its own buffer
 
+  void clear() { from.clear(), to.clear(), face.clear(); }
+
   void group(int vertex_count) {
     const int steps = static_cast<int>(from.size());
-    // Two allocations where there were five (a hull is grouped twice as it
-    // is built, and an 8-point hull's build made 82 allocations in all).
     grouped.assign(3 * static_cast<size_t>(steps), -1);
     lead = grouped.data(), last = lead + steps, count = last + steps;
     std::fill(count, count + steps, 0);
-    std::vector<int> scratch(static_cast<size_t>(vertex_count) + 2 + static_cast<size_t>(steps), 0);
+    scratch.assign(static_cast<size_t>(vertex_count) + 2 + static_cast<size_t>(steps), 0);
     int* start = scratch.data();
     int* bucket = start + vertex_count + 2;
     for (int k = 0; k < steps; ++k) ++start[std::min(from[k], to[k]) + 2];
@@ -149,7 +153,7 @@ struct StepsByEdge {
   }
 
  private:
-  std::vector<int> grouped;
+  std::vector<int> grouped, scratch;
 };
 
 }  // namespace
@@ -236,6 +240,7 @@ Hull Hull::renumbered() const {
   }
   for (const HullEdge& e : edges())
     shape.edges.push_back({last - e.v0, last - e.v1, faces - 1 - e.face_left, faces - 1 - e.face_right});
+  if (const auto edge = unpaired_edge()) shape.unpaired_edge = {last - edge->first, last - edge->second};
   // The same corners and edges, each between the same two vertices in the
   // same direction: the same measures, to the bit.
   shape.diameter = diameter();
@@ -264,18 +269,21 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
   for (const Vec3& n : normals) shape.face_normals.push_back(to_abi(n));
   // Edges keep the order of their first step; the step back gives the
   // face on the right.
-  StepsByEdge steps;
-  steps.from.reserve(steps_total), steps.to.reserve(steps_total), steps.face.reserve(steps_total);
+  static thread_local StepsByEdge steps;
+  steps.clear();
   for (int f = 0; f < static_cast<int>(loops.size()); ++f) {
     const auto& loop = loops[f];
     for (size_t k = 0; k < loop.size(); ++k)
       steps.from.push_back(loop[k]), steps.to.push_back(loop[(k + 1) % loop.size()]), steps.face.push_back(f);
   }
   steps.group(static_cast<int>(shape.vertices.size()));
-  for (int k = 0; k < static_cast<int>(steps_total); ++k)
-    if (steps.lead[k] == k)
-      shape.edges.push_back(
-          {steps.from[k], steps.to[k], steps.face[k], steps.count[k] > 1 ? steps.face[steps.last[k]] : -1});
+  for (int k = 0; k < static_cast<int>(steps_total); ++k) {
+    if (steps.lead[k] != k) continue;
+    shape.edges.push_back(
+        {steps.from[k], steps.to[k], steps.face[k], steps.count[k] > 1 ? steps.face[steps.last[k]] : -1});
+    if (!shape.unpaired_edge && (steps.count[k] != 2 || steps.from[steps.last[k]] != steps.to[k]))
+      shape.unpaired_edge = {steps.from[k], steps.to[k]};
+  }
   hull.measure_shape();
   return hull;
 }
@@ -337,24 +345,14 @@ std::string validate_hull(const Hull& hull) {
   const int v = hull.vertex_count(), e = hull.edge_count(), f = hull.face_count();
   if (v < 4 || f < 4) return "fewer than four vertices or faces";
   // Every loop step from -> to once, and its reverse once: each edge's
-  // steps are exactly two, one each way.
-  StepsByEdge steps;
-  const size_t steps_total = static_cast<size_t>(hull.view().face_offsets[f]);
-  steps.from.reserve(steps_total), steps.to.reserve(steps_total);
-  for (int face = 0; face < f; ++face) {
-    const int n = hull.face_size(face);
-    if (n < 3) return "a face has fewer than three vertices";
-    for (int k = 0; k < n; ++k) {
-      steps.from.push_back(hull.face_vertex(face, k)), steps.to.push_back(hull.face_vertex(face, (k + 1) % n));
-    }
-  }
-  steps.group(v);
-  for (int k = 0; k < static_cast<int>(steps.from.size()); ++k) {
-    if (steps.lead[k] != k) continue;
-    if (steps.count[k] != 2 || steps.from[steps.last[k]] != steps.to[k])
-      return "edge " + std::to_string(steps.from[k]) + "-" + std::to_string(steps.to[k]) +
-             " is not shared by exactly two faces";
-  }
+  // steps are exactly two, one each way. from_faces grouped the steps into
+  // edges and kept the first that does not pair up; grouping them again
+  // here was a fifth of an 8-point hull's build.
+  for (int face = 0; face < f; ++face)
+    if (hull.face_size(face) < 3) return "a face has fewer than three vertices";
+  if (const auto edge = hull.unpaired_edge())
+    return "edge " + std::to_string(edge->first) + "-" + std::to_string(edge->second) +
+           " is not shared by exactly two faces";
   // Every edge in two faces, checked first: an open surface is named as one.
   if (v - e + f != 2) return "Euler characteristic V - E + F = " + std::to_string(v - e + f) + ", not 2";
   const double slack = tol::kHullConvexity * hull.diameter();

@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "manifuzz/abi.h"
@@ -46,6 +47,10 @@ class Hull {
   double shortest_edge() const { return shape_->shortest_edge; }
   /// Sine of the smallest angle between the two edges at a corner of a face.
   double sharpest_corner() const { return shape_->sharpest_corner; }
+  /// The first edge, in loop order, whose loop steps are not one each way
+  /// (from, to: its first step), or nothing where every edge pairs up;
+  /// found as from_faces makes the edges (validate_hull reads it).
+  std::optional<std::pair<int, int>> unpaired_edge() const { return shape_->unpaired_edge; }
   /// The ABI view; valid while this hull or a copy of it lives.
   mfz_hull view() const;
 
@@ -75,6 +80,7 @@ class Hull {
     double diameter = 0;
     double shortest_edge = 0;
     double sharpest_corner = 1;
+    std::optional<std::pair<int, int>> unpaired_edge;
   };
   std::shared_ptr<Shape> shape_ = std::make_shared<Shape>();
   /// Fills in the measures of a hull being built.

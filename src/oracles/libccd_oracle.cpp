@@ -63,6 +63,7 @@ void centre(const void* object, ccd_vec3_t* out) {
 
 PointSet rescaled(const std::vector<Vec3>& world, const Vec3& origin, double scale, const Vec3& shift) {
   PointSet set;
+  set.points.reserve(world.size());  // grown point by point, 8 points took four allocations
   for (const Vec3& p : world) {
     set.points.push_back((p + shift - origin) / scale);
     set.centre += set.points.back();
