@@ -116,9 +116,10 @@ bool drop_one_non_extreme_vertex(std::vector<std::vector<int>>& loops, const std
 // pair them into edges and twice to validate them, was a sixth of a
 // 32-point scene once Qhull was out of it.
 //
-// Each user keeps one per thread and clears it, so that its arrays keep
-// their room from hull to hull: a hull is grouped twice as it is built, and
-// the nine allocations of the two were a tenth of an 8-point hull's build.
+// from_faces keeps one per thread and clears it, so that its arrays keep
+// their room from hull to hull (with validate_hull grouping the steps again,
+// the nine allocations of the two groupings were a tenth of an 8-point
+// hull's build; it now reads from_faces's unpaired edge instead).
 struct StepsByEdge {
   std::vector<int> from, to, face;  // face: only where the edges are made
   int *lead = nullptr, *last = nullptr, *count = nullptr;  // into `grouped`

@@ -40,30 +40,15 @@ MFZ_VECTOR_LANES int points_reaching(const double* x, const double* y, const dou
 // the verdict; a point in a live triangle's band stops the growing early
 // (add_point), which only ever sends a cloud to Qhull sooner.
 //
-// Its arrays are the thread's (GrowingArrays), cleared for each cloud and
-// keeping their room: an 8-point cloud's growing made nine allocations, a
-// sixth of what building its hull cost.
-struct GrowingArrays {
-  std::vector<int> face_of_step;  // the triangle holding each step from -> to, n x n
-  std::vector<Triangle> triangles;
-  std::vector<int> alive;  // the live triangles, in the order they were made
-  std::vector<int> seen;
-  std::vector<std::array<int, 2>> horizon;
-  std::vector<double> x, y, z;  // the points' coordinates as columns
-  std::vector<std::array<int, 3>> sorted;  // the final triangles' sorted corners
-};
-
+// One per thread, grown anew for each cloud: its arrays keep their room
+// from cloud to cloud, where growing an 8-point cloud made nine
+// allocations, a sixth of what building its hull cost.
 class IncrementalHull {
  public:
-  IncrementalHull(const std::vector<Vec3>& points, double diameter, double band, GrowingArrays& arrays)
-      : points_(points), n_(static_cast<int>(points.size())), diameter_(diameter), band_(band),
-        face_of_step_(arrays.face_of_step), triangles_(arrays.triangles), alive_(arrays.alive), seen_(arrays.seen),
-        horizon_(arrays.horizon), x_(arrays.x), y_(arrays.y), z_(arrays.z), sorted_(arrays.sorted) {
+  bool build(const std::vector<Vec3>& points, double diameter, double band) {
+    points_ = points.data(), n_ = static_cast<int>(points.size()), diameter_ = diameter, band_ = band;
     face_of_step_.assign(static_cast<size_t>(n_) * n_, -1);
     triangles_.clear(), alive_.clear(), seen_.clear(), horizon_.clear();
-  }
-
-  bool build() {
     std::array<int, 4> start;
     if (!first_tetrahedron(start)) return false;
     for (int i = 0; i < n_; ++i)
@@ -205,17 +190,18 @@ class IncrementalHull {
     return true;
   }
 
-  const std::vector<Vec3>& points_;
-  const int n_;
-  const double diameter_;
-  const double band_;  // a point nearer a triangle's plane than this lies on it
-  std::vector<int>& face_of_step_;
-  std::vector<Triangle>& triangles_;
-  std::vector<int>& alive_;
-  std::vector<int>& seen_;
-  std::vector<std::array<int, 2>>& horizon_;
-  std::vector<double>&x_, &y_, &z_;
-  std::vector<std::array<int, 3>>& sorted_;
+  // The cloud being grown.
+  const Vec3* points_ = nullptr;
+  int n_ = 0;
+  double diameter_ = 0;
+  double band_ = 0;  // a point nearer a triangle's plane than this lies on it
+  std::vector<int> face_of_step_;  // the triangle holding each step from -> to, n x n
+  std::vector<Triangle> triangles_;
+  std::vector<int> alive_;  // the live triangles, in the order they were made
+  std::vector<int> seen_;
+  std::vector<std::array<int, 2>> horizon_;
+  std::vector<double> x_, y_, z_;  // the points' coordinates as columns
+  std::vector<std::array<int, 3>> sorted_;  // the final triangles' sorted corners
 };
 
 }  // namespace
@@ -231,9 +217,8 @@ std::optional<std::vector<QhullFacet>> simplicial_facets(const std::vector<Vec3>
   diameter = std::sqrt(diameter);
   if (!(diameter > 0) || !std::isfinite(diameter) || !std::isfinite(largest)) return std::nullopt;
   const double band = std::max(kNearPlane * diameter, kCoordinateRounding * largest);
-  static thread_local GrowingArrays arrays;
-  IncrementalHull hull(points, diameter, band, arrays);
-  if (!hull.build()) return std::nullopt;
+  static thread_local IncrementalHull hull;
+  if (!hull.build(points, diameter, band)) return std::nullopt;
   return hull.facets();
 }
 

@@ -489,15 +489,13 @@ constexpr InvariantRow kInvariants[] = {
 
 // Runs the rows that `wanted` selects; after a failed `finite` the rest are
 // skipped, since they would read garbage.
-template <class Wanted>
-Verdict run_rows(const Context& c, int32_t status, Wanted&& wanted) {
+Verdict run_rows(const Context& c, int32_t status) {
   Verdict v;
   v.generator_status = status;
   if (status != 0) return v;
   v.checks.reserve(std::size(kInvariants));
   bool garbage = false;
   for (const InvariantRow& row : kInvariants) {
-    if (!wanted(row)) continue;
     InvariantCheck check = garbage ? skipped("output not finite") : row.check(c);
     check.name = row.name;
     // Every length tolerance holds the precision's rounding once.
@@ -531,7 +529,7 @@ Verdict check_manifold(const Scene& scene, const OracleAnswers& oracles, int32_t
                        const Profile& profile, PassDetails pass_details) {
   const Context c{scene, oracles, m, profile, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1,
                   pass_details == PassDetails::written};
-  return run_rows(c, status, [](const InvariantRow&) { return true; });
+  return run_rows(c, status);
 }
 
 std::optional<InvariantCheck> check_transformed_manifold(const Scene& scene, const OracleAnswers& original,
