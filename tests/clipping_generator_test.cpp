@@ -254,6 +254,62 @@ TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachC
   }
 }
 
+// A side every point lies inside is passed over. Clipping against every
+// side in turn, as Sutherland-Hodgman does, must give the same points,
+// crossing marks and all: polygons wholly inside a 64-gon, crossing it,
+// with corners inside a side's band (on the side, kept as they are) and
+// just beyond it (clipped), each already carrying a crossing mark.
+TEST(ClippingGenerator, SidesThatClipNothingArePassedOverWithThePolygonEverySideInTurnGives) {
+  const int corners = 64;
+  ClipPolygon loop;
+  for (int k = 0; k < corners; ++k) {
+    const double t = 2 * M_PI * k / corners;
+    loop.push(Vec3(std::cos(t), std::sin(t), 0));
+  }
+  ClipFace reference;
+  reference.normal = Vec3(0, 0, 1);
+  reference.polygon = &loop;
+  reference.world_resolution = 1;
+  PrismSides sides;
+  keep_prism_sides(reference, sides);
+  reference.sides = &sides;
+  // The band of side 0, whose outward normal is the bisector of the first
+  // two corners: a corner within it is on the side, one beyond it out.
+  const Vec3 out0 = sides.plane[0].normal;
+  const double on_side = sides.plane[0].offset;
+  int passed_over = 0, clipped = 0;
+  for (int n = 0; n < 48; ++n) {
+    const double reach = 0.2 + 0.03 * n;  // 0.2 to 1.61: inside the 64-gon, then across it
+    const double turn = 0.37 * n;
+    ClipPolygon incident;
+    for (int k = 0; k < 5; ++k) {
+      const double t = turn + 2 * M_PI * k / 5;
+      incident.push(Vec3(reach * std::cos(t), reach * std::sin(t), 0.01 * k), k % 2 == 1);
+    }
+    if (n % 3 == 1) {
+      const SideBands bands = side_bands(reference, incident);
+      incident.push(out0 * (on_side + 0.5 * bands.on_plane), true);  // on side 0, within its band
+    }
+    if (n % 3 == 2) incident.push(out0 * (on_side + 1e-9));  // beyond side 0's band
+    ClipPolygon every_side = incident, scratch;
+    const SideBands bands = side_bands(reference, every_side);
+    for (int k = 0; k < corners; ++k) {
+      ASSERT_TRUE(clip_to_plane(every_side, sides.plane[k], scratch, bands.on_plane, bands.near_plane, &sides.edge[k]));
+      every_side.take(scratch);
+    }
+    ClipPolygon skipping = incident;
+    ASSERT_TRUE(clip_to_reference_prism(reference, skipping, nullptr));
+    ASSERT_EQ(skipping.size(), every_side.size()) << "polygon " << n;
+    for (int k = 0; k < skipping.size(); ++k) {
+      EXPECT_EQ(skipping[k], every_side[k]) << "polygon " << n << ", point " << k;
+      EXPECT_EQ(skipping.is_crossing(k), every_side.is_crossing(k)) << "polygon " << n << ", point " << k;
+    }
+    (reach < 0.99 && n % 3 != 2 ? passed_over : clipped) += 1;
+  }
+  EXPECT_GT(passed_over, 10);
+  EXPECT_GT(clipped, 10);
+}
+
 // The other faces below the reference plane (F27) that lie wholly beside
 // one side of the prism are passed over before their patch is gathered.
 // Through a face_polygon step that is not the built-in's own, the shortcut

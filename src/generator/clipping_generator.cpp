@@ -271,14 +271,29 @@ bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
 // point_on_a leaves the hull.
 namespace {
 
+// Whether clip_to_plane would give `polygon` back as it is: every point
+// inside the side by its own test, so that no edge crosses it.
+bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane) {
+  for (int k = 0; k < polygon.size(); ++k)
+    if (!(side.signed_distance(polygon[k]) <= on_plane)) return false;
+  return true;
+}
+
+// A side that every point lies inside is passed over: Sutherland-Hodgman
+// would copy the polygon, points and crossing marks, unchanged. Most sides
+// of a many-sided reference face clip nothing (a 64-gon cylinder's cap
+// clipped 28 side faces of the other cylinder a call through its 64 sides,
+// a third of the call, to add a point twice in 7,242 faces).
 bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPolygon& scratch, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
   for (int k = 0; k < reference.polygon->size(); ++k) {
     Plane side;
     SideEdge edge;
     if (!prism_side(reference, k, side, edge)) continue;
-    if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
-    incident.take(scratch);
+    if (!inside_side(incident, side, bands.on_plane)) {
+      if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
+      incident.take(scratch);
+    }
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
   }
