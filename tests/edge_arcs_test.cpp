@@ -88,6 +88,33 @@ TEST(EdgeArcs, AHullWithAnOpenEdgeIsNotComplete) {
   EXPECT_FALSE(EdgeArcs(PosedHull(view, pose)).complete());
 }
 
+// The columns are filled on first use after each build, from the hull of
+// that build: arcs kept per thread and built again for another hull must
+// not answer with the last hull's columns.
+TEST(EdgeArcs, ColumnsAreTheArcsOfTheLastBuild) {
+  const Hull first = *build_hull(test::sphere_points(32, 3)).hull;
+  const Hull second = *build_hull(test::box_points(1, 2, 3)).hull;
+  const mfz_hull view_first = first.view(), view_second = second.view();
+  const Pose pose{Vec3(0.5, -1, 2), test::about(Vec3(1, 2, 3), 0.4)};
+  const PosedHull posed_first(view_first, pose), posed_second(view_second, pose);
+  EdgeArcs arcs;
+  arcs.build(posed_first);
+  ASSERT_GT(arcs.columns().face_x[0] * arcs.columns().face_x[0] + arcs.columns().face_y[0] * arcs.columns().face_y[0] +
+                arcs.columns().face_z[0] * arcs.columns().face_z[0],
+            0.5);
+  arcs.build(posed_second);
+  ASSERT_TRUE(arcs.complete());
+  const ArcColumns& c = arcs.columns();
+  for (int i = 0; i < arcs.size(); ++i) {
+    const EdgeArc& arc = arcs[i];
+    const Vec3 v0 = posed_second.world_vertex(arc.v0);
+    EXPECT_EQ(Vec3(c.face_x[i], c.face_y[i], c.face_z[i]), arc.n_face) << "arc " << i;
+    EXPECT_EQ(Vec3(c.twin_x[i], c.twin_y[i], c.twin_z[i]), arc.n_twin) << "arc " << i;
+    EXPECT_EQ(Vec3(c.across_x[i], c.across_y[i], c.across_z[i]), arc.across) << "arc " << i;
+    EXPECT_EQ(Vec3(c.v0_x[i], c.v0_y[i], c.v0_z[i]), v0) << "arc " << i;
+  }
+}
+
 // The row filter in vector lanes must keep every pair the scalar test keeps,
 // the near-misses its slack lets through included: boxes face to face put
 // arc ends exactly on the other's great circles (products of 0), random

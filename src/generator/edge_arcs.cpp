@@ -24,6 +24,8 @@ long long edge_key(int low, int high, int vertex_count) {
 void EdgeArcs::build(const PosedHull& hull) {
   count_ = 0;
   complete_ = false;
+  has_columns_ = false;
+  hull_ = &hull;
   if (hull.vertex_count() > kCachedVertices) return;
   // The twins are known already for a hull whose topology is kept.
   if (const HullTopology* topology = hull.topology()) {
@@ -37,7 +39,6 @@ void EdgeArcs::build(const PosedHull& hull) {
       arcs_[count_++] = {edge.v0, edge.v1, edge.face, edge.twin, n_face, n_twin, n_twin.cross(n_face)};
     }
     complete_ = true;
-    fill_columns(hull);
     return;
   }
   for (int f = 0; f < hull.face_count(); ++f) {
@@ -50,10 +51,11 @@ void EdgeArcs::build(const PosedHull& hull) {
     }
   }
   complete_ = pair_twins(hull);
-  if (complete_) fill_columns(hull);
 }
 
-void EdgeArcs::fill_columns(const PosedHull& hull) {
+void EdgeArcs::fill_columns() const {
+  has_columns_ = true;
+  const PosedHull& hull = *hull_;
   ArcColumns& c = columns_;
   for (int i = 0; i < count_; ++i) {
     const EdgeArc& arc = arcs_[i];
@@ -115,7 +117,7 @@ int gather_crossing(const ArcColumns& columns, int count, const int* index, cons
 }  // namespace
 
 int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
-  return gather_crossing(columns_, count_, nullptr, arc_a, out);
+  return gather_crossing(columns(), count_, nullptr, arc_a, out);
 }
 
 int crossing_among(const ArcColumns& kept, int count, const int* index, const EdgeArc& arc_a, int* out) {
