@@ -9,6 +9,7 @@
 #include "case/case_file.h"
 #include "case/scene.h"
 #include "generator/coplanar_patch.h"
+#include "geometry/tolerances.h"
 #include "geometry/hull.h"
 #include "test_support.h"
 
@@ -227,7 +228,8 @@ TEST(ClippingGenerator, AKeptPointsColumnIsAsWideInATurnedWorld) {
 // The sides kept once per call are the sides computed as each is clipped
 // against, to the bit: a 6-gon's kept, a 100-gon's (past kKeptPrismSides)
 // computed, and a tilted square clipped against each gives the same points
-// either way.
+// either way, within the same bands (read from the kept loop's largest
+// coordinate, or measured on the loop).
 TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachClip) {
   for (const int corners : {3, 6, kKeptPrismSides, 100}) {
     ClipPolygon loop, incident;
@@ -246,7 +248,15 @@ TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachC
     PrismSides sides;
     keep_prism_sides(reference, sides);
     EXPECT_EQ(sides.count, corners <= kKeptPrismSides ? corners : 0);
+    const SideBands computed_bands = side_bands(reference, incident);
     reference.sides = &sides;
+    const SideBands kept_bands = side_bands(reference, incident);
+    EXPECT_EQ(kept_bands.on_plane, computed_bands.on_plane) << corners << " corners";
+    EXPECT_EQ(kept_bands.near_plane, computed_bands.near_plane) << corners << " corners";
+    // A polygon smaller than the loop: the loop's coordinate sets the band.
+    ClipPolygon small;
+    for (int k = 0; k < incident.size(); ++k) small.push(0.01 * incident[k]);
+    EXPECT_EQ(side_bands(reference, small).on_plane, tol::world_rounding(1.0)) << corners << " corners";
     ASSERT_TRUE(clip_to_reference_prism(reference, kept, nullptr));
     ASSERT_EQ(kept.size(), computed.size()) << corners << " corners";
     ASSERT_GT(kept.size(), 4) << corners << " corners: the square is clipped";

@@ -176,7 +176,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   double perimeter = 0;
   for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
   const double column = tol::kTie * perimeter;
-  const double reference_largest = largest_coordinate(loop);
+  const double reference_largest = reference.sides ? reference.sides->largest : largest_coordinate(loop);
   // The shortcut stands for the built-in's own steps only: a mutant's
   // patch or clip is run as it is.
   const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
@@ -224,8 +224,8 @@ void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
 SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   // F23: an incident edge that lies in a side plane is on it, not across it
   // by a rounding error at each end.
-  const double on_plane =
-      tol::world_rounding(std::max(largest_coordinate(*reference.polygon), largest_coordinate(incident)));
+  const double reference_largest = reference.sides ? reference.sides->largest : largest_coordinate(*reference.polygon);
+  const double on_plane = tol::world_rounding(std::max(reference_largest, largest_coordinate(incident)));
   // F32: B's corners carry the rounding of the world's positions into the
   // frame, so a corner that far outside a side plane may be inside it in
   // another frame: its edge crosses at the corner's foot on the plane, not
@@ -255,6 +255,7 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   const int n = reference.polygon->size();
   sides.count = n <= kKeptPrismSides ? n : 0;
   for (int k = 0; k < sides.count; ++k) sides.spans[k] = reference_side(reference, k, sides.plane[k], sides.edge[k]);
+  sides.largest = largest_coordinate(*reference.polygon);
 }
 
 bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
@@ -283,13 +284,18 @@ bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane)
 // would copy the polygon, points and crossing marks, unchanged. Most sides
 // of a many-sided reference face clip nothing (a 64-gon cylinder's cap
 // clipped 28 side faces of the other cylinder a call through its 64 sides,
-// a third of the call, to add a point twice in 7,242 faces).
+// a third of the call, to add a point twice in 7,242 faces). Kept sides
+// are read where they are: copied out for each face, they were a tenth of
+// such a call.
 bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPolygon& scratch, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
+  const PrismSides* kept = reference.sides && reference.sides->count > 0 ? reference.sides : nullptr;
   for (int k = 0; k < reference.polygon->size(); ++k) {
-    Plane side;
-    SideEdge edge;
-    if (!prism_side(reference, k, side, edge)) continue;
+    Plane computed;
+    SideEdge computed_edge;
+    if (kept ? !kept->spans[k] : !reference_side(reference, k, computed, computed_edge)) continue;
+    const Plane& side = kept ? kept->plane[k] : computed;
+    const SideEdge& edge = kept ? kept->edge[k] : computed_edge;
     if (!inside_side(incident, side, bands.on_plane)) {
       if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
       incident.take(scratch);
@@ -516,7 +522,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // and their contacts joined: picking one would leave the choice to rounding.
   int incident_faces[kMaxTiedFaces] = {incident.index};
   const int tied = steps.incident_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
-  const double resolution = largest_coordinate(reference_polygon);
+  const double resolution = sides.largest;
   const Vec3 on_reference = reference.hull->world_face_point(reference.index, 0);
   const Plane reference_plane{reference.normal, reference.normal.dot(on_reference)};
   for (int i = 0; i < tied; ++i) {

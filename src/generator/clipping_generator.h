@@ -43,6 +43,9 @@ struct PrismSides {
   Plane plane[kKeptPrismSides];
   SideEdge edge[kKeptPrismSides];
   bool spans[kKeptPrismSides];  ///< false for an edge of no length
+  /// The loop's largest coordinate, which side_bands reads for every face
+  /// clipped (kept whatever the loop's size).
+  double largest = 0;
 };
 
 /// A significant face in world space, and the polygon that stands for it.
@@ -116,7 +119,8 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
 /// length.
 bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
 /// Computes each side of the prism over `reference`'s polygon into `sides`,
-/// when it has at most kKeptPrismSides corners (else sides.count is 0).
+/// when it has at most kKeptPrismSides corners (else sides.count is 0), and
+/// the loop's largest coordinate.
 void keep_prism_sides(const ClipFace& reference, PrismSides& sides);
 /// reference_side, read from the kept sides when `reference` has them.
 bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
