@@ -320,14 +320,20 @@ bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, C
                            : clip_with_own_scratch(reference, incident, trace);
 }
 
+constexpr int kCoreFromCorners = 8;
+
 // The tutorial's last loop: each clipped point is on the incident face; its depth
 // is measured from the closest point of the reference polygon, along n.
 void emit_clipped_contacts(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
                    mfz_manifold& out) {
   const ClipPolygon& loop = *reference.polygon;
+  // Only a many-sided loop is worth its core: on a box's four sides the
+  // pass cost more than the tests it spared (boxes tilted 0.8% more).
+  const PolygonCore core = loop.size() >= kCoreFromCorners ? polygon_core(&loop[0], loop.size(), reference.normal)
+                                                           : PolygonCore{};
   for (int k = 0; k < clipped.size(); ++k) {
     const Vec3& point = clipped[k];
-    const Vec3 on_reference = closest_point_on_polygon(point, &loop[0], loop.size(), reference.normal);
+    const Vec3 on_reference = closest_point_on_polygon(point, &loop[0], loop.size(), reference.normal, core);
     double penetration = (point - on_reference).dot(n);
     if (flipped) penetration = -penetration;
     if (!(penetration < 0)) continue;  // the tutorial's sanity check: above the reference face, not a contact

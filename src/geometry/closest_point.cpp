@@ -1,5 +1,6 @@
 #include "geometry/closest_point.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -84,8 +85,11 @@ void closest_between_segments(const Vec3& p1, const Vec3& q1, const Vec3& p2, co
   on_2 = p2 + t * d2;
 }
 
-Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal) {
-  const Vec3 projected = p - normal.dot(p - loop[0]) * normal;
+namespace {
+
+// Inlined into both callers: a call between them cost a box pair 0.2%.
+[[gnu::always_inline]] inline Vec3 closest_of_projection(const Vec3& p, const Vec3& projected, const Vec3* loop,
+                                                         int count, const Vec3& normal) {
   bool inside = true;
   for (int k = 0; k < count && inside; ++k) {
     const Vec3& a = loop[k];
@@ -102,6 +106,46 @@ Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const 
     if (d < best_sq) best_sq = d, best = c;
   }
   return best;
+}
+
+}  // namespace
+
+Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal) {
+  return closest_of_projection(p, p - normal.dot(p - loop[0]) * normal, loop, count, normal);
+}
+
+// Edge k's inside value at a projection q, (b - a) x (q - a) . n, is its
+// value at the centre c plus (b - a) x (q - c) . n, which is at least
+// -|b - a| |q - c| |n|: so a q nearer c than every edge's value at c over
+// |b - a| has every value positive. Each value rounds by a few ulps of
+// |b - a| times the loop's reach about c, the loop's floats being what they
+// are (each difference rounds relative to itself); 1e-9 of the reach is a
+// millionfold room for that and for |n| differing from 1.
+PolygonCore polygon_core(const Vec3* loop, int count, const Vec3& normal) {
+  PolygonCore core;
+  if (count < 3) return core;
+  Vec3 sum = Vec3::Zero();
+  for (int k = 0; k < count; ++k) sum += loop[k];
+  const Vec3 centre = sum / static_cast<double>(count);
+  double nearest = std::numeric_limits<double>::infinity(), reach = 0;
+  for (int k = 0; k < count; ++k) {
+    const Vec3& a = loop[k];
+    const Vec3 edge = loop[(k + 1) % count] - a;
+    reach = std::max(reach, (a - centre).norm());
+    const double length = edge.norm();
+    if (!(length > 0)) continue;  // a repeated corner: its value is 0, which passes
+    nearest = std::min(nearest, edge.cross(centre - a).dot(normal) / length);
+  }
+  if (!std::isfinite(nearest)) return core;
+  core.centre = centre;
+  core.radius = nearest - 1e-9 * reach;
+  return core;
+}
+
+Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal, const PolygonCore& core) {
+  const Vec3 projected = p - normal.dot(p - loop[0]) * normal;
+  if (core.radius > 0 && (projected - core.centre).norm() < core.radius) return projected;
+  return closest_of_projection(p, projected, loop, count, normal);
 }
 
 }  // namespace mfz

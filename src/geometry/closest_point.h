@@ -27,4 +27,19 @@ void closest_between_segments(const Vec3& p1, const Vec3& q1, const Vec3& p2, co
 /// closest point of the boundary.
 Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal);
 
+/// A ball about a polygon's centre whose points' projections pass every
+/// edge of closest_point_on_polygon's inside test, with room for that
+/// test's rounding: a point projected into it is inside without the test.
+/// Worth its one pass over the loop where many points are measured against
+/// one polygon (a cylinder's 60 contacts against its 64-gon cap tested 64
+/// edges each, a tenth of the call).
+struct PolygonCore {
+  Vec3 centre = Vec3::Zero();
+  double radius = -1;  ///< negative: no point is taken inside without the test
+};
+PolygonCore polygon_core(const Vec3* loop, int count, const Vec3& normal);
+/// closest_point_on_polygon, to the bit, skipping the inside test for a
+/// projection within `core` (of the same loop and normal).
+Vec3 closest_point_on_polygon(const Vec3& p, const Vec3* loop, int count, const Vec3& normal, const PolygonCore& core);
+
 }  // namespace mfz
