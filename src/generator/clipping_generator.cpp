@@ -71,14 +71,13 @@ void record(ClipTrace* trace, std::string what, const ClipPolygon& polygon) {
 // as before even so: the patch's points inside the prism lie in its other
 // faces, which would give them too, but starting from another corner, in
 // another order.
-bool lone_face_clips_to_nothing(const PosedHull& incident, int f, const ClipFace& reference,
-                                double reference_largest) {
+bool lone_face_clips_to_nothing(const PosedHull& incident, int f, const ClipFace& reference) {
   const PrismSides* sides = reference.sides;
   if (!sides || sides->count == 0) return false;
   const int n = incident.face_size(f);
   // The hull's reach bounds its loop's largest coordinate: a band at least
   // the clip's, so that a face outside it is outside the clip's.
-  const double on_plane = tol::world_rounding(std::max(reference_largest, incident.reach_from_origin()));
+  const double on_plane = tol::world_rounding(std::max(sides->largest, incident.reach_from_origin()));
   bool outside = false;
   for (int s = 0; s < sides->count && !outside; ++s) {
     if (!sides->spans[s]) continue;
@@ -176,7 +175,6 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   double perimeter = 0;
   for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
   const double column = tol::kTie * perimeter;
-  const double reference_largest = reference.sides ? reference.sides->largest : largest_coordinate(loop);
   // The shortcut stands for the built-in's own steps only: a mutant's
   // patch or clip is run as it is.
   const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
@@ -191,7 +189,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     for (int k = 0; k < incident.face_size(f) && !reaches_below; ++k)
       reaches_below = reference_plane.signed_distance(incident.world_face_point(f, k)) < 0;
     if (!reaches_below) continue;
-    if (builtin_clip && lone_face_clips_to_nothing(incident, f, reference, reference_largest)) continue;
+    if (builtin_clip && lone_face_clips_to_nothing(incident, f, reference)) continue;
     if (builtin_clip) {
       int members = 0;
       const int size = patch_loop(incident, f, corners, members);
@@ -224,6 +222,7 @@ void face_loop(const PosedHull& hull, int face, ClipPolygon& out) {
 SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   // F23: an incident edge that lies in a side plane is on it, not across it
   // by a rounding error at each end.
+  // The reference loop's largest coordinate is kept with its sides.
   const double reference_largest = reference.sides ? reference.sides->largest : largest_coordinate(*reference.polygon);
   const double on_plane = tol::world_rounding(std::max(reference_largest, largest_coordinate(incident)));
   // F32: B's corners carry the rounding of the world's positions into the
@@ -258,13 +257,6 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   sides.largest = largest_coordinate(*reference.polygon);
 }
 
-bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
-  const PrismSides* kept = reference.sides;
-  if (!kept || kept->count == 0) return reference_side(reference, k, side, edge);
-  side = kept->plane[k];
-  edge = kept->edge[k];
-  return kept->spans[k];
-}
 
 // F1: the clipping method's contact region is the prism over the reference
 // face. The adjacent faces' planes only bound it where those faces stand
@@ -284,20 +276,16 @@ bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane)
 // would copy the polygon, points and crossing marks, unchanged. Most sides
 // of a many-sided reference face clip nothing (a 64-gon cylinder's cap
 // clipped 28 side faces of the other cylinder a call through its 64 sides,
-// a third of the call, to add a point twice in 7,242 faces). Kept sides
-// are read where they are: copied out for each face, they were a tenth of
-// such a call.
+// a third of the call, to add a point twice in 7,242 faces).
 bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPolygon& scratch, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
-  const PrismSides* kept = reference.sides && reference.sides->count > 0 ? reference.sides : nullptr;
+  Plane computed;
+  SideEdge computed_edge;
   for (int k = 0; k < reference.polygon->size(); ++k) {
-    Plane computed;
-    SideEdge computed_edge;
-    if (kept ? !kept->spans[k] : !reference_side(reference, k, computed, computed_edge)) continue;
-    const Plane& side = kept ? kept->plane[k] : computed;
-    const SideEdge& edge = kept ? kept->edge[k] : computed_edge;
-    if (!inside_side(incident, side, bands.on_plane)) {
-      if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
+    const PrismSide side = prism_side(reference, k, computed, computed_edge);
+    if (!side.plane) continue;
+    if (!inside_side(incident, *side.plane, bands.on_plane)) {
+      if (!clip_to_plane(incident, *side.plane, scratch, bands.on_plane, bands.near_plane, side.edge)) return false;
       incident.take(scratch);
     }
     if (trace)

@@ -122,8 +122,22 @@ bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edg
 /// when it has at most kKeptPrismSides corners (else sides.count is 0), and
 /// the loop's largest coordinate.
 void keep_prism_sides(const ClipFace& reference, PrismSides& sides);
-/// reference_side, read from the kept sides when `reference` has them.
-bool prism_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
+/// Side k of the reference prism and the edge it stands on: the kept ones,
+/// read where they are, when `reference` has them, else reference_side's,
+/// computed into `computed` and `computed_edge`. A null plane for an edge
+/// of no length. Inline, and no copy: copied out for each side of each
+/// face clipped, the kept sides were a tenth of a cylinder pair's call, and
+/// called out of line 3%.
+struct PrismSide {
+  const Plane* plane = nullptr;
+  const SideEdge* edge = nullptr;
+};
+inline PrismSide prism_side(const ClipFace& reference, int k, Plane& computed, SideEdge& computed_edge) {
+  const PrismSides* kept = reference.sides;
+  if (!kept || kept->count == 0)
+    return reference_side(reference, k, computed, computed_edge) ? PrismSide{&computed, &computed_edge} : PrismSide{};
+  return kept->spans[k] ? PrismSide{&kept->plane[k], &kept->edge[k]} : PrismSide{};
+}
 /// Sutherland-Hodgman against the prism over the reference face: through each
 /// edge, the plane perpendicular to the face.
 bool clip_to_reference_prism(const ClipFace& reference, ClipPolygon& incident, ClipTrace* trace);

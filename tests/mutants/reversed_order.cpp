@@ -7,10 +7,11 @@ bool clip_sides_backwards(const mfz::ClipFace& reference, mfz::ClipPolygon& inci
   const mfz::SideBands bands = mfz::side_bands(reference, incident);
   mfz::ClipPolygon scratch;
   for (int k = reference.polygon->size(); k-- > 0;) {
-    mfz::Plane side;
-    mfz::SideEdge edge;
-    if (!mfz::prism_side(reference, k, side, edge)) continue;
-    if (!mfz::clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, &edge)) return false;
+    mfz::Plane computed;
+    mfz::SideEdge computed_edge;
+    const mfz::PrismSide side = mfz::prism_side(reference, k, computed, computed_edge);
+    if (!side.plane) continue;
+    if (!mfz::clip_to_plane(incident, *side.plane, scratch, bands.on_plane, bands.near_plane, side.edge)) return false;
     incident.take(scratch);
   }
   return true;
