@@ -3,7 +3,8 @@
 // harness makes), the peers' plugins built beside it (Bullet's SAT and
 // GJK/EPA paths, ODE's convex collider and dBoxBox), and libccd's EPA and MPR
 // (one point each). Each family's 1024 pairs are cycled through the timed
-// loop, so no one case stays hot in the cache. After Google Benchmark's own
+// loop, so no one case stays hot in the cache (MANIFUZZ_BENCH_PAIRS cycles
+// fewer). After Google Benchmark's own
 // report, a table: the median ns per query, contacts per query, and each
 // generator's time over the built-in's (scripts/bench_table.sh).
 #include <benchmark/benchmark.h>
@@ -213,7 +214,20 @@ int main(int argc, char** argv) {
   add_plugin(contenders, loaded, "ODE dBoxBox", "libmanifuzz_peer_ode_box.so", true);
   contenders.push_back({"libccd EPA (1 point)", false, ccd_query(false)});
   contenders.push_back({"libccd MPR (1 point)", false, ccd_query(true)});
-  const std::vector<bench::BenchFamily> families = bench::bench_families();
+  // MANIFUZZ_BENCH_PAIRS=N: N pairs a family cycled instead of 1,024. With
+  // 64 the pairs stay in the cache, so the two runs tell how much of a call
+  // is waiting on memory (docs/generator.md: a sixth of an 8-point call).
+  int pairs = 1024;
+  if (const char* given = std::getenv("MANIFUZZ_BENCH_PAIRS")) {
+    char* end = nullptr;
+    const long n = std::strtol(given, &end, 10);
+    if (end == given || *end != '\0' || n < 1 || n > 1024) {
+      std::fprintf(stderr, "generator_bench: MANIFUZZ_BENCH_PAIRS takes a count of pairs from 1 to 1024, not '%s'\n", given);
+      return 2;
+    }
+    pairs = static_cast<int>(n);
+  }
+  const std::vector<bench::BenchFamily> families = bench::bench_families(pairs);
   for (const auto& family : families)
     for (const Contender& c : contenders) {
       if (c.boxes_only && !family.boxes) continue;
