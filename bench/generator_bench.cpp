@@ -216,7 +216,7 @@ int main(int argc, char** argv) {
   contenders.push_back({"libccd MPR (1 point)", false, ccd_query(true)});
   // MANIFUZZ_BENCH_PAIRS=N: N pairs a family cycled instead of 1,024. With
   // 64 the pairs stay in the cache, so the two runs tell how much of a call
-  // is waiting on memory (docs/generator.md: a sixth of an 8-point call).
+  // is waiting on memory (docs/generator.md: a fifth of an 8-point call).
   int pairs = 1024;
   if (const char* given = std::getenv("MANIFUZZ_BENCH_PAIRS")) {
     char* end = nullptr;

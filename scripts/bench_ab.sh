@@ -3,10 +3,10 @@
 # run of bench/generator_bench on one pinned core, the order swapped from
 # run to run, ROUNDS times each way; per family, the new build's time over
 # the base's in every run and the median of those ratios. On a shared
-# machine one run's ratio moves by 5-10% (stop 39 saw a family whose code
-# did not change come out 3-8% apart), and the plugin timed first is not
-# always favoured; a change smaller than the spread of its ratios is not
-# measured here.
+# machine one run's ratio moves a lot: a build against a copy of itself
+# gave single runs from 0.84 to 1.12 and medians of six from 0.991 to 1.007
+# (stop 39, three rounds), so a change smaller than the spread of its
+# ratios is not measured here.
 #
 #   scripts/bench_ab.sh BASE.so NEW.so [ROUNDS] [FAMILIES]
 #
