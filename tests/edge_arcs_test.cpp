@@ -88,31 +88,62 @@ TEST(EdgeArcs, AHullWithAnOpenEdgeIsNotComplete) {
   EXPECT_FALSE(EdgeArcs(PosedHull(view, pose)).complete());
 }
 
-// The columns are filled on first use after each build, from the hull of
-// that build: arcs kept per thread and built again for another hull must
-// not answer with the last hull's columns.
+// The columns are the only copy of the arcs' ends, circles and first
+// vertices: each build writes them from its own hull, with its topology
+// (a cloud, a box) and without it (a box with a corner in the middle of an
+// edge, whose twins are paired by sorting). Arcs kept per thread and built
+// again for another hull must not answer with the last hull's columns.
+void expect_columns_of(const EdgeArcs& arcs, const PosedHull& posed) {
+  ASSERT_TRUE(arcs.complete());
+  const ArcColumns& c = arcs.columns();
+  int edges = 0;
+  posed.for_each_edge([&](int e, int v0, int v1, int face) {
+    ++edges;
+    const EdgeArc arc = arcs[e];
+    EXPECT_EQ(arc.v0, v0) << "arc " << e;
+    EXPECT_EQ(arc.v1, v1) << "arc " << e;
+    EXPECT_EQ(arc.face, face) << "arc " << e;
+    EXPECT_EQ(arc.twin, posed.face_across(v0, v1)) << "arc " << e;
+    const Vec3 n_face = posed.world_face_normal(face), n_twin = posed.world_face_normal(arc.twin);
+    EXPECT_EQ(Vec3(c.face_x[e], c.face_y[e], c.face_z[e]), n_face) << "arc " << e;
+    EXPECT_EQ(Vec3(c.twin_x[e], c.twin_y[e], c.twin_z[e]), n_twin) << "arc " << e;
+    EXPECT_EQ(Vec3(c.across_x[e], c.across_y[e], c.across_z[e]), n_twin.cross(n_face)) << "arc " << e;
+    EXPECT_EQ(Vec3(c.v0_x[e], c.v0_y[e], c.v0_z[e]), posed.world_vertex(v0)) << "arc " << e;
+    EXPECT_EQ(arc.n_face, n_face) << "arc " << e;
+    EXPECT_EQ(arc.n_twin, n_twin) << "arc " << e;
+    EXPECT_EQ(arc.across, n_twin.cross(n_face)) << "arc " << e;
+    return true;
+  });
+  EXPECT_EQ(arcs.size(), edges);
+}
+
 TEST(EdgeArcs, ColumnsAreTheArcsOfTheLastBuild) {
   const Hull first = *build_hull(test::sphere_points(32, 3)).hull;
   const Hull second = *build_hull(test::box_points(1, 2, 3)).hull;
   const mfz_hull view_first = first.view(), view_second = second.view();
   const Pose pose{Vec3(0.5, -1, 2), test::about(Vec3(1, 2, 3), 0.4)};
   const PosedHull posed_first(view_first, pose), posed_second(view_second, pose);
+  ASSERT_NE(posed_first.topology(), nullptr);
   EdgeArcs arcs;
   arcs.build(posed_first);
-  ASSERT_GT(arcs.columns().face_x[0] * arcs.columns().face_x[0] + arcs.columns().face_y[0] * arcs.columns().face_y[0] +
-                arcs.columns().face_z[0] * arcs.columns().face_z[0],
-            0.5);
+  expect_columns_of(arcs, posed_first);
   arcs.build(posed_second);
-  ASSERT_TRUE(arcs.complete());
-  const ArcColumns& c = arcs.columns();
-  for (int i = 0; i < arcs.size(); ++i) {
-    const EdgeArc& arc = arcs[i];
-    const Vec3 v0 = posed_second.world_vertex(arc.v0);
-    EXPECT_EQ(Vec3(c.face_x[i], c.face_y[i], c.face_z[i]), arc.n_face) << "arc " << i;
-    EXPECT_EQ(Vec3(c.twin_x[i], c.twin_y[i], c.twin_z[i]), arc.n_twin) << "arc " << i;
-    EXPECT_EQ(Vec3(c.across_x[i], c.across_y[i], c.across_z[i]), arc.across) << "arc " << i;
-    EXPECT_EQ(Vec3(c.v0_x[i], c.v0_y[i], c.v0_z[i]), v0) << "arc " << i;
-  }
+  expect_columns_of(arcs, posed_second);
+  // A unit box with a vertex in the middle of one edge, in both of its
+  // faces' loops: a corner of two edges, so no topology is kept for it.
+  std::vector<Vec3> corners;
+  for (int i = 0; i < 8; ++i) corners.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  corners.emplace_back(0.5, 0, 0);
+  const std::vector<std::vector<int>> loops = {{0, 2, 3, 1, 8}, {4, 5, 7, 6},    {0, 8, 1, 5, 4},
+                                               {2, 6, 7, 3},    {0, 4, 6, 2},    {1, 3, 7, 5}};
+  const std::vector<Vec3> normals = {Vec3(0, 0, -1), Vec3(0, 0, 1),  Vec3(0, -1, 0),
+                                     Vec3(0, 1, 0),  Vec3(-1, 0, 0), Vec3(1, 0, 0)};
+  const Hull split = Hull::from_faces(corners, loops, normals);
+  const mfz_hull view_split = split.view();
+  const PosedHull posed_split(view_split, pose);
+  ASSERT_EQ(posed_split.topology(), nullptr);
+  arcs.build(posed_split);
+  expect_columns_of(arcs, posed_split);
 }
 
 // The row filter in vector lanes must keep every pair the scalar test keeps,

@@ -182,6 +182,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   ClippedPatches& patches = work.patches;
   int* corners = work.corners;
   patches.clear();
+  incident.turn_face_normals();
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
     if (!(incident.world_face_normal(f).dot(reference.normal) < -tol::kFacingCosine)) continue;

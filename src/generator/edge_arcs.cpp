@@ -24,19 +24,15 @@ long long edge_key(int low, int high, int vertex_count) {
 void EdgeArcs::build(const PosedHull& hull) {
   count_ = 0;
   complete_ = false;
-  has_columns_ = false;
-  hull_ = &hull;
   if (hull.vertex_count() > kCachedVertices) return;
   // The twins are known already for a hull whose topology is kept.
   if (const HullTopology* topology = hull.topology()) {
     // Each face's normal turned once, not once for each of its edges'
     // ends: a face has three or more edges, each edge two faces.
-    Vec3 normals[kTopologyMaxFaces];
-    for (int f = 0; f < hull.face_count(); ++f) normals[f] = hull.world_face_normal(f);
+    hull.turn_face_normals();
     for (int e = 0; e < topology->edge_count(); ++e) {
       const TopologyEdge& edge = topology->edge(e);
-      const Vec3 &n_face = normals[edge.face], &n_twin = normals[edge.twin];
-      arcs_[count_++] = {edge.v0, edge.v1, edge.face, edge.twin, n_face, n_twin, n_twin.cross(n_face)};
+      add(hull, edge.v0, edge.v1, edge.face, edge.twin);
     }
     complete_ = true;
     return;
@@ -47,24 +43,31 @@ void EdgeArcs::build(const PosedHull& hull) {
       const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
       if (v0 >= v1) continue;
       if (count_ == kMaxArcs) return;
-      arcs_[count_++] = {v0, v1, f, -1, hull.world_face_normal(f), Vec3::Zero(), Vec3::Zero()};
+      add(hull, v0, v1, f, -1);
     }
   }
   complete_ = pair_twins(hull);
 }
 
-void EdgeArcs::fill_columns() const {
-  has_columns_ = true;
-  const PosedHull& hull = *hull_;
+// Arc count_ from its vertices and faces; without its twin (-1) until
+// pair_twins finds it.
+void EdgeArcs::add(const PosedHull& hull, int v0, int v1, int face, int twin) {
+  const int i = count_++;
+  indices_[i] = {v0, v1, face, -1};
   ArcColumns& c = columns_;
-  for (int i = 0; i < count_; ++i) {
-    const EdgeArc& arc = arcs_[i];
-    const Vec3 v0 = hull.world_vertex(arc.v0);
-    c.face_x[i] = arc.n_face.x(), c.face_y[i] = arc.n_face.y(), c.face_z[i] = arc.n_face.z();
-    c.twin_x[i] = arc.n_twin.x(), c.twin_y[i] = arc.n_twin.y(), c.twin_z[i] = arc.n_twin.z();
-    c.across_x[i] = arc.across.x(), c.across_y[i] = arc.across.y(), c.across_z[i] = arc.across.z();
-    c.v0_x[i] = v0.x(), c.v0_y[i] = v0.y(), c.v0_z[i] = v0.z();
-  }
+  const Vec3 n_face = hull.world_face_normal(face), v = hull.world_vertex(v0);
+  c.face_x[i] = n_face.x(), c.face_y[i] = n_face.y(), c.face_z[i] = n_face.z();
+  c.v0_x[i] = v.x(), c.v0_y[i] = v.y(), c.v0_z[i] = v.z();
+  if (twin >= 0) set_twin(i, hull, twin);
+}
+
+void EdgeArcs::set_twin(int i, const PosedHull& hull, int twin) {
+  indices_[i].twin = twin;
+  ArcColumns& c = columns_;
+  const Vec3 n_face(c.face_x[i], c.face_y[i], c.face_z[i]), n_twin = hull.world_face_normal(twin);
+  const Vec3 across = n_twin.cross(n_face);
+  c.twin_x[i] = n_twin.x(), c.twin_y[i] = n_twin.y(), c.twin_z[i] = n_twin.z();
+  c.across_x[i] = across.x(), c.across_y[i] = across.y(), c.across_z[i] = across.z();
 }
 
 // With A's arc a -> b and B's negated c -> d: c . across_a times
@@ -117,7 +120,7 @@ int gather_crossing(const ArcColumns& columns, int count, const int* index, cons
 }  // namespace
 
 int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
-  return gather_crossing(columns(), count_, nullptr, arc_a, out);
+  return gather_crossing(columns_, count_, nullptr, arc_a, out);
 }
 
 int crossing_among(const ArcColumns& kept, int count, const int* index, const EdgeArc& arc_a, int* out) {
@@ -154,14 +157,11 @@ bool EdgeArcs::pair_twins(const PosedHull& hull) {
   if (twin_count != count_) return false;
   std::sort(twins, twins + twin_count, [](const TwinStep& x, const TwinStep& y) { return x.key < y.key; });
   for (int i = 0; i < count_; ++i) {
-    EdgeArc& arc = arcs_[i];
-    const long long key = edge_key(arc.v0, arc.v1, vertices);
+    const long long key = edge_key(indices_[i].v0, indices_[i].v1, vertices);
     const TwinStep* found = std::lower_bound(twins, twins + twin_count, key,
                                              [](const TwinStep& t, long long k) { return t.key < k; });
     if (found == twins + twin_count || found->key != key) return false;
-    arc.twin = found->face;
-    arc.n_twin = hull.world_face_normal(arc.twin);
-    arc.across = arc.n_twin.cross(arc.n_face);
+    set_twin(i, hull, found->face);
   }
   return true;
 }

@@ -18,6 +18,12 @@ namespace mfz {
 /// Every polyhedron with V vertices has at most 3V - 6 edges.
 inline constexpr int kMaxArcs = 3 * kCachedVertices;
 
+/// An arc's vertices and faces: what a pair's own tests read besides the
+/// arcs' ends and circles.
+struct ArcIndices {
+  int v0, v1, face, twin;
+};
+
 struct EdgeArc {
   int v0, v1;      ///< v0 < v1; the step v0 -> v1 lies in the loop of `face`
   int face, twin;  ///< the faces on either side
@@ -39,20 +45,36 @@ class EdgeArcs {
   EdgeArcs() = default;
   /// The arcs in SAT's edge order: loop steps with v0 < v1, faces in order.
   explicit EdgeArcs(const PosedHull& hull) { build(hull); }
-  /// The same, into this object: SAT keeps two per thread rather than 34 KB
+  /// The same, into this object: SAT keeps two per thread rather than 43 KB
   /// each on the stack of every call.
   void build(const PosedHull& hull);
   bool complete() const { return complete_; }
   int size() const { return count_; }
-  const EdgeArc& operator[](int i) const { return arcs_[i]; }
-  /// The arcs as columns, filled on first use after each build: SAT reads
-  /// A's only where it bounds whole rows of large hulls, and a small pair's
-  /// call filled them for nothing (8-point hulls 0.9% of a call). Only
-  /// while the hull built from is alive, as the arcs' indices are.
-  const ArcColumns& columns() const {
-    if (!has_columns_) fill_columns();
-    return columns_;
+  /// Arc i, gathered from the columns and the vertex and face indices.
+  EdgeArc operator[](int i) const {
+    const ArcColumns& c = columns_;
+    const ArcIndices& at = indices_[i];
+    return {at.v0,
+            at.v1,
+            at.face,
+            at.twin,
+            Vec3(c.face_x[i], c.face_y[i], c.face_z[i]),
+            Vec3(c.twin_x[i], c.twin_y[i], c.twin_z[i]),
+            Vec3(c.across_x[i], c.across_y[i], c.across_z[i])};
   }
+  /// Arc i's vertices and faces alone.
+  const ArcIndices& indices(int i) const { return indices_[i]; }
+  /// may_span_minkowski_face of A's arc and arc j of these, read from the
+  /// columns: a pair the lanes let through is tested without gathering the
+  /// whole arc (64-gon cylinders, whose rows let through many, took 1.06x
+  /// the time when each was gathered).
+  bool may_cross(const EdgeArc& arc_a, int j) const;
+  /// The arcs as columns: the only copy of their ends, circles and first
+  /// vertices. Each arc was kept as a struct as well, and the columns were
+  /// filled from the structs: a 128-point pair's call wrote 138 KB of arcs,
+  /// and building and filling took 16% of its time. Only while the hull
+  /// built from is alive.
+  const ArcColumns& columns() const { return columns_; }
 
   /// The arcs (of B) that may cross `arc_a` (an arc of A's):
   /// may_span_minkowski_face's three tests, for every arc at once, in
@@ -62,15 +84,14 @@ class EdgeArcs {
   int crossing(const EdgeArc& arc_a, int* out) const;
 
  private:
+  void add(const PosedHull& hull, int v0, int v1, int face, int twin);
+  void set_twin(int i, const PosedHull& hull, int twin);
   bool pair_twins(const PosedHull& hull);
-  void fill_columns() const;
 
-  EdgeArc arcs_[kMaxArcs];
-  mutable ArcColumns columns_;
-  const PosedHull* hull_ = nullptr;  ///< the hull built from, for its vertices
+  ArcIndices indices_[kMaxArcs];
+  ArcColumns columns_;
   int count_ = 0;
   bool complete_ = false;
-  mutable bool has_columns_ = false;
 };
 
 /// Of the arcs in `all` (the first `count`), those whose `left_out` is
@@ -90,16 +111,29 @@ int crossing_among(const ArcColumns& kept, int count, const int* index, const Ed
 /// c and d lie either side of the plane of a, b, a and b either side of the
 /// plane of c, d, and the two crossings are one point, not antipodes.
 /// Inline: SAT asks it of every pair of edges.
-inline bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
+/// The same with B's arc given by its ends and circle.
+inline bool may_span_minkowski_face(const EdgeArc& edge_a, const Vec3& b_face, const Vec3& b_twin,
+                                    const Vec3& b_across) {
   constexpr double slack = tol::kGaussArcSlack;
   // Most pairs fail the first test: the other two dot products only for
   // those that pass.
-  const double cba = -edge_b.n_face.dot(edge_a.across);
-  const double dba = -edge_b.n_twin.dot(edge_a.across);
+  const double cba = -b_face.dot(edge_a.across);
+  const double dba = -b_twin.dot(edge_a.across);
   if (!(cba * dba < slack)) return false;
-  const double adc = edge_a.n_face.dot(edge_b.across);
-  const double bdc = edge_a.n_twin.dot(edge_b.across);
+  const double adc = edge_a.n_face.dot(b_across);
+  const double bdc = edge_a.n_twin.dot(b_across);
   return adc * bdc < slack && cba * bdc > -slack;
+}
+
+inline bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
+  return may_span_minkowski_face(edge_a, edge_b.n_face, edge_b.n_twin, edge_b.across);
+}
+
+inline bool EdgeArcs::may_cross(const EdgeArc& arc_a, int j) const {
+  const ArcColumns& c = columns_;
+  return may_span_minkowski_face(arc_a, Vec3(c.face_x[j], c.face_y[j], c.face_z[j]),
+                                 Vec3(c.twin_x[j], c.twin_y[j], c.twin_z[j]),
+                                 Vec3(c.across_x[j], c.across_y[j], c.across_z[j]));
 }
 
 }  // namespace mfz

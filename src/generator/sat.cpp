@@ -301,6 +301,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // Pairs of small hulls bound their edge pairs without the balls.
   const bool scan_pairs = a.vertex_count() <= kScanPairVertices && b.vertex_count() <= kScanPairVertices;
   HullSummary sa = summary_of(a), sb = summary_of(b);
+  a.turn_face_normals(), b.turn_face_normals();
   // More than any tie's slack in `consider` (its extents are at most twice
   // the reach), plus the bounds' own rounding.
   const double rounding = 4 * tol::world_rounding(std::max(sa.extent, sb.extent) + sa.reach + sb.reach);
@@ -362,7 +363,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     return best;
   }
   // The arcs live in thread-local storage, not on the call's stack (about
-  // 70 KB each, sized for 128-point hulls); a call runs to its end before
+  // 43 KB each, sized for 128-point hulls); a call runs to its end before
   // the thread makes another.
   static thread_local EdgeArcs kept_arcs_a, kept_arcs_b;
   kept_arcs_a.build(a);
@@ -376,7 +377,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   if (row_bounds || !scan_pairs) measure_balls();
   const Vec3 centres = sb.centre - sa.centre;
   int back_a = 0, back_b = 0;  // where the last climbs against an axis ended
-  const auto pair_is_hopeless = [&](const EdgeArc& x, const EdgeArc& y) {
+  const auto pair_is_hopeless = [&](const EdgeArc& x, const ArcIndices& y) {
     const Vec3 a0 = a.world_vertex(x.v0), b0 = b.world_vertex(y.v0);
     const Vec3 axis = (a.world_vertex(x.v1) - a0).cross(b.world_vertex(y.v1) - b0);
     const double length = axis.norm();
@@ -412,13 +413,14 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     return edge_hopeless(m.dot(a.world_vertex(top)) - m.dot(b.world_vertex(bottom)));
   };
   const auto against = [&](int i, const int* js, int count) {
-    const EdgeArc& x = arcs_a[i];
+    const EdgeArc x = arcs_a[i];
     for (int k = 0; k < count; ++k) {
       const int j = js[k];
-      const EdgeArc& y = arcs_b[j];
-      if (!may_span_minkowski_face(x, y) || pair_is_hopeless(x, y)) continue;
+      const ArcIndices& y = arcs_b.indices(j);
+      if (!arcs_b.may_cross(x, j) || pair_is_hopeless(x, y)) continue;
       const bool apart = !consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
-        return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(y.n_face, y.n_twin);
+        const EdgeArc arc_b = arcs_b[j];
+        return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(arc_b.n_face, arc_b.n_twin);
       });
       if (apart) return false;
     }

@@ -86,7 +86,18 @@ class PosedHull {
   int face_vertex(int f, int k) const { return hull_.face_vertices[hull_.face_offsets[f] + k]; }
   Vec3 local_vertex(int i) const { return to_vec(hull_.vertices[i]); }
   Vec3 world_vertex(int i) const { return cached_ ? world_[i] : Vec3(rotation_ * local_vertex(i) + pose_.position); }
-  Vec3 world_face_normal(int f) const { return rotation_ * to_vec(hull_.face_normals[f]); }
+  Vec3 world_face_normal(int f) const { return normals_turned_ ? normals_[f] : turned_normal(f); }
+  /// Turns every face's normal into the frame at once, for the passes that
+  /// read them all: SAT's faces, the inner ball, the edge arcs and the faces
+  /// reaching below the reference plane each turned them again, 1,800
+  /// turns of a 128-point pair's call where 504 do. The same product as
+  /// world_face_normal's, so the same bits. Hulls of more faces than the
+  /// topology holds turn each normal where it is read.
+  void turn_face_normals() const {
+    if (normals_turned_ || hull_.face_count > kTopologyMaxFaces) return;
+    for (int f = 0; f < hull_.face_count; ++f) normals_[f] = turned_normal(f);
+    normals_turned_ = true;
+  }
   /// World position of the k-th vertex of face f's loop.
   Vec3 world_face_point(int f, int k) const { return world_vertex(face_vertex(f, k)); }
 
@@ -230,6 +241,8 @@ class PosedHull {
   }
 
  private:
+  Vec3 turned_normal(int f) const { return rotation_ * to_vec(hull_.face_normals[f]); }
+
   const mfz_hull& hull_;
   const Pose& pose_;
   Mat3 rotation_;
@@ -238,6 +251,8 @@ class PosedHull {
   mutable bool topology_looked_up_ = false;
   mutable double reach_from_origin_ = -1;
   mutable double span_ = -1;
+  mutable bool normals_turned_ = false;
+  mutable Vec3 normals_[kTopologyMaxFaces];
   Vec3 world_[kCachedVertices];
   double xs_[kCachedVertices], ys_[kCachedVertices], zs_[kCachedVertices];
 };
