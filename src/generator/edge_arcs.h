@@ -84,7 +84,7 @@ class EdgeArcs {
   int crossing(const EdgeArc& arc_a, int* out) const;
 
  private:
-  void add(const PosedHull& hull, int v0, int v1, int face, int twin);
+  void add(const PosedHull& hull, int v0, int v1, int face);
   void set_twin(int i, const PosedHull& hull, int twin);
   bool pair_twins(const PosedHull& hull);
 
