@@ -27,58 +27,44 @@ void EdgeArcs::build(const PosedHull& hull) {
   if (hull.vertex_count() > kCachedVertices) return;
   // The twins are known already for a hull whose topology is kept.
   if (const HullTopology* topology = hull.topology()) {
-    // Each face's normal turned once, not once for each of its edges'
-    // ends: a face has three or more edges, each edge two faces. One loop
-    // writes each arc's columns straight from the topology's edge: through
-    // add and set_twin an arc took 88 instructions (a 128-point call built
-    // 756 arcs).
-    hull.turn_face_normals();
-    ArcColumns& c = columns_;
-    const int count = topology->edge_count();
-    for (int e = 0; e < count; ++e) {
+    count_ = topology->edge_count();
+    for (int e = 0; e < count_; ++e) {
       const TopologyEdge& edge = topology->edge(e);
       indices_[e] = {edge.v0, edge.v1, edge.face, edge.twin};
-      const Vec3 n_face = hull.world_face_normal(edge.face), n_twin = hull.world_face_normal(edge.twin);
-      const Vec3 v = hull.world_vertex(edge.v0), across = n_twin.cross(n_face);
-      c.face_x[e] = n_face.x(), c.face_y[e] = n_face.y(), c.face_z[e] = n_face.z();
-      c.twin_x[e] = n_twin.x(), c.twin_y[e] = n_twin.y(), c.twin_z[e] = n_twin.z();
-      c.across_x[e] = across.x(), c.across_y[e] = across.y(), c.across_z[e] = across.z();
-      c.v0_x[e] = v.x(), c.v0_y[e] = v.y(), c.v0_z[e] = v.z();
     }
-    count_ = count;
-    complete_ = true;
-    return;
-  }
-  for (int f = 0; f < hull.face_count(); ++f) {
-    const int n = hull.face_size(f);
-    for (int k = 0; k < n; ++k) {
-      const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
-      if (v0 >= v1) continue;
-      if (count_ == kMaxArcs) return;
-      add(hull, v0, v1, f);
+  } else {
+    for (int f = 0; f < hull.face_count(); ++f) {
+      const int n = hull.face_size(f);
+      for (int k = 0; k < n; ++k) {
+        const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
+        if (v0 >= v1) continue;
+        if (count_ == kMaxArcs) return;
+        indices_[count_++] = {v0, v1, f, -1};
+      }
     }
+    if (!pair_twins(hull)) return;
   }
-  complete_ = pair_twins(hull);
+  write_columns(hull);
+  complete_ = true;
 }
 
-// Arc count_ of a hull without a topology, from its vertices and face;
-// without its twin (-1) until pair_twins finds it.
-void EdgeArcs::add(const PosedHull& hull, int v0, int v1, int face) {
-  const int i = count_++;
-  indices_[i] = {v0, v1, face, -1};
+// Each arc's ends, circle and first vertex, in one loop over its indices.
+// Each face's normal turned once, not once for each of its edges' ends: a
+// face has three or more edges, each edge two faces. Written through a
+// member function per arc and another for its twin, an arc took 88
+// instructions (a 128-point call builds 756).
+void EdgeArcs::write_columns(const PosedHull& hull) {
+  hull.turn_face_normals();
   ArcColumns& c = columns_;
-  const Vec3 n_face = hull.world_face_normal(face), v = hull.world_vertex(v0);
-  c.face_x[i] = n_face.x(), c.face_y[i] = n_face.y(), c.face_z[i] = n_face.z();
-  c.v0_x[i] = v.x(), c.v0_y[i] = v.y(), c.v0_z[i] = v.z();
-}
-
-void EdgeArcs::set_twin(int i, const PosedHull& hull, int twin) {
-  indices_[i].twin = twin;
-  ArcColumns& c = columns_;
-  const Vec3 n_face(c.face_x[i], c.face_y[i], c.face_z[i]), n_twin = hull.world_face_normal(twin);
-  const Vec3 across = n_twin.cross(n_face);
-  c.twin_x[i] = n_twin.x(), c.twin_y[i] = n_twin.y(), c.twin_z[i] = n_twin.z();
-  c.across_x[i] = across.x(), c.across_y[i] = across.y(), c.across_z[i] = across.z();
+  for (int i = 0; i < count_; ++i) {
+    const ArcIndices& at = indices_[i];
+    const Vec3 n_face = hull.world_face_normal(at.face), n_twin = hull.world_face_normal(at.twin);
+    const Vec3 v = hull.world_vertex(at.v0), across = n_twin.cross(n_face);
+    c.face_x[i] = n_face.x(), c.face_y[i] = n_face.y(), c.face_z[i] = n_face.z();
+    c.twin_x[i] = n_twin.x(), c.twin_y[i] = n_twin.y(), c.twin_z[i] = n_twin.z();
+    c.across_x[i] = across.x(), c.across_y[i] = across.y(), c.across_z[i] = across.z();
+    c.v0_x[i] = v.x(), c.v0_y[i] = v.y(), c.v0_z[i] = v.z();
+  }
 }
 
 // With A's arc a -> b and B's negated c -> d: c . across_a times
@@ -172,7 +158,7 @@ bool EdgeArcs::pair_twins(const PosedHull& hull) {
     const TwinStep* found = std::lower_bound(twins, twins + twin_count, key,
                                              [](const TwinStep& t, long long k) { return t.key < k; });
     if (found == twins + twin_count || found->key != key) return false;
-    set_twin(i, hull, found->face);
+    indices_[i].twin = found->face;
   }
   return true;
 }

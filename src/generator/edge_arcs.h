@@ -84,9 +84,8 @@ class EdgeArcs {
   int crossing(const EdgeArc& arc_a, int* out) const;
 
  private:
-  void add(const PosedHull& hull, int v0, int v1, int face);
-  void set_twin(int i, const PosedHull& hull, int twin);
   bool pair_twins(const PosedHull& hull);
+  void write_columns(const PosedHull& hull);
 
   ArcIndices indices_[kMaxArcs];
   ArcColumns columns_;

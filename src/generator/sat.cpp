@@ -412,8 +412,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     const int top = a.climb_to_support(m, x.v0), bottom = b.climb_to_support(-m, y.v0);
     return edge_hopeless(m.dot(a.world_vertex(top)) - m.dot(b.world_vertex(bottom)));
   };
-  const auto against = [&](int i, const int* js, int count) {
-    const EdgeArc x = arcs_a[i];
+  const auto against = [&](int i, const EdgeArc& x, const int* js, int count) {
     for (int k = 0; k < count; ++k) {
       const int j = js[k];
       const ArcIndices& y = arcs_b.indices(j);
@@ -432,8 +431,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     // whole row in vector lanes: the pair loop was most of a small hull's
     // SAT, and with only the first of the three tests in lanes, ten pairs
     // in eleven reached the loop to fail the other two (32-point hulls).
-    for (int i = 0; i < arcs_a.size(); ++i)
-      if (!against(i, near, arcs_b.crossing(arcs_a[i], near))) return best;
+    for (int i = 0; i < arcs_a.size(); ++i) {
+      const EdgeArc x = arcs_a[i];
+      if (!against(i, x, near, arcs_b.crossing(x, near))) return best;
+    }
     return best;
   }
   // Whole rows at once, before their candidates are found: every pair in
@@ -462,9 +463,11 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   static thread_local ArcColumns kept_b;
   static thread_local int kept_index[kMaxArcs];
   const int kept = keep_arcs(arcs_b.columns(), arcs_b.size(), left_out, kept_b, kept_index);
-  for (int i = 0; i < arcs_a.size(); ++i)
-    if (!(row_margin[i] > 0) && !against(i, near, crossing_among(kept_b, kept, kept_index, arcs_a[i], near)))
-      return best;
+  for (int i = 0; i < arcs_a.size(); ++i) {
+    if (row_margin[i] > 0) continue;
+    const EdgeArc x = arcs_a[i];
+    if (!against(i, x, near, crossing_among(kept_b, kept, kept_index, x, near))) return best;
+  }
   return best;
 }
 
