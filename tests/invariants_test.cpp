@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "geometry/tolerances.h"
+#include "oracles/contact_region.h"
 #include "test_support.h"
 
 namespace mfz {
@@ -330,6 +331,51 @@ TEST_F(ReducedManifold, FourCornersOnOneSideFailEvenAtTheDeclaredMaxContacts) {
 // first-touching strip.
 TEST_F(ReducedManifold, FewerContactsThanDeclaredAreHeldToTheFirstTouchingStrip) {
   EXPECT_EQ(spans(keeping({1, 3, 5, 7}), 8), CheckStatus::fail);
+}
+
+// Leaving a pass's detail out may spare the work behind its numbers, never
+// change a verdict. The eight contacts slid across the strip so that they
+// miss its centroid by a fraction of its drift (from 0.99 to 0.995 of the
+// depth) up to ten drifts: spans-contact-region gives the same status and
+// error either way, passing those within four drifts, failing the rest.
+TEST_F(ReducedManifold, LeavingTheDetailOutChangesNoVerdictOnTheStrip) {
+  const Scene& s = run_.scene;
+  const Vec3 n = to_vec(run_.manifold.normal).normalized();
+  const double depth = run_.oracles.exact.signed_depth, slack = s.length_tolerance(tol::kRegionSlack);
+  const Eigen::Vector2d centroid = contact_region(s, n, 0.99 * depth * n, slack).centroid;
+  const double drift = (contact_region(s, n, 0.995 * depth * n, slack).centroid - centroid).norm();
+  ASSERT_GT(drift, 1e-5);
+  Vec3 u, v;
+  plane_basis(n, u, v);
+  // Outward across the deepest edge, which the centroid lies beside.
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (int i = 0; i < run_.manifold.contact_count; ++i) {
+    const Vec3 p = to_vec(run_.manifold.contacts[i].point_on_a);
+    mean += Eigen::Vector2d(u.dot(p), v.dot(p)) / run_.manifold.contact_count;
+  }
+  const Eigen::Vector2d out2 = (centroid - mean).normalized();
+  const Vec3 out = out2.x() * u + out2.y() * v;
+  double edge = -INFINITY;
+  for (int i = 0; i < run_.manifold.contact_count; ++i)
+    edge = std::max(edge, out.dot(to_vec(run_.manifold.contacts[i].point_on_a)));
+  const double inside_by = edge - out2.dot(centroid);
+  const auto spans_check = [&](const mfz_manifold& m, PassDetails details) {
+    for (const InvariantCheck& c : check_manifold(s, run_.oracles, 0, m, {}, details).checks)
+      if (c.name == "spans-contact-region") return c;
+    return InvariantCheck{};
+  };
+  for (const double drifts : {-1.0, 0.5, 2.0, 3.5, 6.0, 10.0}) {
+    mfz_manifold m = run_.manifold;
+    for (int i = 0; i < m.contact_count; ++i)
+      for (mfz_vec3* p : {&m.contacts[i].point_on_a, &m.contacts[i].point_on_b})
+        *p = to_abi(to_vec(*p) - (inside_by + drifts * drift) * out);
+    const InvariantCheck written = spans_check(m, PassDetails::written);
+    const InvariantCheck left_out = spans_check(m, PassDetails::left_out);
+    EXPECT_EQ(written.status, drifts <= 4 ? CheckStatus::pass : CheckStatus::fail) << drifts << " drifts";
+    EXPECT_EQ(left_out.status, written.status) << drifts << " drifts";
+    EXPECT_EQ(left_out.error, written.error) << drifts << " drifts";
+    EXPECT_EQ(written.error > 0, drifts > 0) << drifts << " drifts";
+  }
 }
 
 TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {

@@ -385,10 +385,19 @@ CentroidMiss centroid_miss(const Context& c, const ContactRegion& region, double
   const double depth = c.oracles.exact.signed_depth, slack = c.scene.length_tolerance(tol::kRegionSlack);
   CentroidMiss miss;
   if (region.empty) return miss;
-  const ContactRegion closer = contact_region(c.scene, n, nearer * depth * n, slack);
   miss.width = region.width;
-  miss.drift = closer.empty ? INFINITY : (region.centroid - closer.centroid).norm();
   miss.off = distance_to_convex_hull_2d(region.centroid, contacts);
+  // A centroid inside the contacts' hull passes whatever the drift, and an
+  // error of zero reads the same against any tolerance: the closer region
+  // is worked out only when the check will be read for its numbers (it was
+  // half of the check, which was 7% of a fuzz execution).
+  if (miss.off == 0 && !c.pass_details) {
+    miss.drift = 0;
+    miss.allowed = c.scene.length_tolerance(tol::kRegionPoint);
+    return miss;
+  }
+  const ContactRegion closer = contact_region(c.scene, n, nearer * depth * n, slack);
+  miss.drift = closer.empty ? INFINITY : (region.centroid - closer.centroid).norm();
   miss.allowed = c.scene.length_tolerance(tol::kRegionPoint) + tol::kRegionDrift * miss.drift;
   return miss;
 }
@@ -435,9 +444,16 @@ InvariantCheck check_spans_contact_region(const Context& c) {
                                   directed_overlap(c.scene.world_b, c.scene.world_b, n));
   if ((1 - halfway) * depth >= thinner)
     return skipped("a hull is thinner along n than the first-touching slab: the region is its outline");
+  // A contact deeper than a quarter of the widest its region can be is no
+  // shallow one, whatever the region: the region is worked out only where
+  // the bound lets it be thin (random overlapping hulls first touch at a
+  // corner, 1% of the depth across, and working out that region only to
+  // skip the check was 7% of a fuzz execution).
+  const char* not_shallow = "not a shallow contact: the hulls' intersection is not thin along n";
+  if (!(depth <= tol::kThinRegion * region_width_bound(c.scene, n, first * depth * n, slack)))
+    return skipped(not_shallow);
   const ContactRegion region = contact_region(c.scene, n, first * depth * n, slack);
-  if (region.empty || !(depth <= tol::kThinRegion * region.width))
-    return skipped("not a shallow contact: the hulls' intersection is not thin along n");
+  if (region.empty || !(depth <= tol::kThinRegion * region.width)) return skipped(not_shallow);
   // The region lying against two faces of one hull that both face the other
   // (a face folded under the contact) is the contract's folded-face tie: the
   // clipping method contacts one of them (near-coplanar, seeds 101, 102,

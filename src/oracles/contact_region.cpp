@@ -268,6 +268,49 @@ ContactRegion contact_region(const Scene& s, const Vec3& n, const Vec3& shift_b,
   return region;
 }
 
+double region_width_bound(const Scene& s, const Vec3& n, const Vec3& shift_b, double slack) {
+  Vec3 u, v;
+  plane_basis(n, u, v);
+  const auto extent = [&](const std::vector<Vec3>& world, double& low, double& high) {
+    low = INFINITY, high = -INFINITY;
+    for (const Vec3& p : world) low = std::min(low, n.dot(p)), high = std::max(high, n.dot(p));
+  };
+  double low_a, high_a, low_b, high_b;
+  extent(s.world_a, low_a, high_a);
+  extent(s.world_b, low_b, high_b);
+  // Every corner lies within the slack of both hulls, so within the slab
+  // where their extents along n overlap, widened by twice the slack for the
+  // point of each hull it stands beside.
+  const double along_b = n.dot(shift_b);
+  const double low = std::max(low_a, low_b + along_b) - 2 * slack;
+  const double high = std::min(high_a, high_b + along_b) + 2 * slack;
+  if (!(low <= high)) return 4 * slack;
+  // A hull's section by the slab has for corners its vertices in the slab
+  // and its edges' crossings of the slab's two planes; the bounding
+  // rectangle of their shadows in (u, v).
+  const auto section_rectangle = [&](const Hull& hull, const std::vector<Vec3>& world, const Vec3& shift,
+                                     Vec2& rect_low, Vec2& rect_high) {
+    rect_low = Vec2::Constant(INFINITY), rect_high = Vec2::Constant(-INFINITY);
+    const auto add = [&](const Vec3& p) {
+      const Vec2 q(u.dot(p), v.dot(p));
+      rect_low = rect_low.cwiseMin(q), rect_high = rect_high.cwiseMax(q);
+    };
+    for (const Vec3& p : world)
+      if (const double h = n.dot(p + shift); h >= low && h <= high) add(p + shift);
+    for (const HullEdge& e : hull.edges()) {
+      const Vec3 p = world[e.v0] + shift, q = world[e.v1] + shift;
+      const double hp = n.dot(p), hq = n.dot(q);
+      for (const double plane : {low, high})
+        if ((hp < plane) != (hq < plane)) add(p + ((plane - hp) / (hq - hp)) * (q - p));
+    }
+  };
+  Vec2 low_in_a, high_in_a, low_in_b, high_in_b;
+  section_rectangle(s.hull_a, s.world_a, Vec3::Zero(), low_in_a, high_in_a);
+  section_rectangle(s.hull_b, s.world_b, shift_b, low_in_b, high_in_b);
+  const Vec2 across = (high_in_a.cwiseMin(high_in_b) - low_in_a.cwiseMax(low_in_b)).cwiseMax(0.0);
+  return across.norm() * (1 + 1e-12) + 4 * slack;
+}
+
 std::vector<Vec2> convex_hull_2d(std::vector<Vec2> points) { return monotone_chain(std::move(points)); }
 
 double convex_hull_area_2d(const std::vector<Vec2>& points) {

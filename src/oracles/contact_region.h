@@ -33,6 +33,12 @@ void plane_basis(const Vec3& n, Vec3& u, Vec3& v);
 /// boundary within rounding.
 ContactRegion contact_region(const Scene& scene, const Vec3& n, const Vec3& shift_b, double slack);
 
+/// No contact_region(scene, n, shift_b, slack) is wider than this: its
+/// corners lie within the slack of both hulls, so within each hull's section
+/// by the slab where the two overlap along n, and within the bounding
+/// rectangles of those sections' shadows.
+double region_width_bound(const Scene& scene, const Vec3& n, const Vec3& shift_b, double slack);
+
 /// The convex hull of `points`, counter-clockwise (collinear points dropped).
 std::vector<Eigen::Vector2d> convex_hull_2d(std::vector<Eigen::Vector2d> points);
 /// The area of the convex hull of `points` (0 for fewer than three).
