@@ -450,9 +450,9 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   // corner, 1% of the depth across, and working out that region only to
   // skip the check was 7% of a fuzz execution).
   const char* not_shallow = "not a shallow contact: the hulls' intersection is not thin along n";
-  if (!(depth <= tol::kThinRegion * region_width_bound(c.scene, n, first * depth * n, slack)))
-    return skipped(not_shallow);
-  const ContactRegion region = contact_region(c.scene, n, first * depth * n, slack);
+  const Vec3 first_touch = first * depth * n;
+  if (!(depth <= tol::kThinRegion * region_width_bound(c.scene, n, first_touch, slack))) return skipped(not_shallow);
+  const ContactRegion region = contact_region(c.scene, n, first_touch, slack);
   if (region.empty || !(depth <= tol::kThinRegion * region.width)) return skipped(not_shallow);
   // The region lying against two faces of one hull that both face the other
   // (a face folded under the contact) is the contract's folded-face tie: the

@@ -296,7 +296,7 @@ double region_width_bound(const Scene& s, const Vec3& n, const Vec3& shift_b, do
       rect_low = rect_low.cwiseMin(q), rect_high = rect_high.cwiseMax(q);
     };
     for (const Vec3& p : world)
-      if (const double h = n.dot(p + shift); h >= low && h <= high) add(p + shift);
+      if (const Vec3 q = p + shift; n.dot(q) >= low && n.dot(q) <= high) add(q);
     for (const HullEdge& e : hull.edges()) {
       const Vec3 p = world[e.v0] + shift, q = world[e.v1] + shift;
       const double hp = n.dot(p), hq = n.dot(q);
