@@ -3,8 +3,9 @@
 // at a time where the processor has AVX2, smaller ones inline. Both must give
 // the bits of one sum, (ax x + ay y) + az z, for every vertex: SAT's answers
 // are compared to the bit before and after a change, and replays must give
-// the same bits on any machine. The face normals, turned all at once for
-// the passes that read every face, must be the bits each turned alone is.
+// the same bits on any machine; so must many axes projected at once. The
+// face normals, turned all at once for the passes that read every face, must
+// be the bits each turned alone is.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -46,6 +47,32 @@ TEST(PosedHull, AProjectionIsOneSumPerVertexInlineOrInWideLanes) {
       const Interval got = posed.project(axis), want = reference_projection(posed, axis);
       ASSERT_EQ(got.min, want.min) << points << " points, trial " << trial;
       ASSERT_EQ(got.max, want.max) << points << " points, trial " << trial;
+    }
+  }
+}
+
+// Many axes at once, as SAT on small hulls projects the edge pairs the
+// Gauss-map test keeps and the brute-force SAT its rows: each axis's bounds
+// the bits of that axis projected alone, for every count of axes (the
+// lanes' remainder) and of vertices (the fours' remainder).
+TEST(PosedHull, ProjectingOntoManyAxesAtOnceGivesEachAxisAloneToTheBit) {
+  std::mt19937_64 random(20261128);
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (const int points : {5, 8, 23, 64}) {
+    const Hull hull = *build_hull(test::sphere_points(points, static_cast<unsigned>(points) + 2)).hull;
+    const mfz_hull view = hull.view();
+    for (const int count : {1, 3, 4, 7, 17, 90}) {
+      const Pose pose{Vec3(u(random), u(random), u(random)) * 1e7,
+                      Quat(u(random), u(random), u(random), u(random)).normalized()};
+      const PosedHull posed(view, pose);
+      std::vector<double> ax(count), ay(count), az(count), lowest(count), highest(count);
+      for (int j = 0; j < count; ++j) ax[j] = 3 * u(random), ay[j] = 3 * u(random), az[j] = 3 * u(random);
+      posed.project_onto_axes(ax.data(), ay.data(), az.data(), count, lowest.data(), highest.data());
+      for (int j = 0; j < count; ++j) {
+        const Interval want = reference_projection(posed, Vec3(ax[j], ay[j], az[j]));
+        ASSERT_EQ(lowest[j], want.min) << points << " points, " << count << " axes, axis " << j;
+        ASSERT_EQ(highest[j], want.max) << points << " points, " << count << " axes, axis " << j;
+      }
     }
   }
 }

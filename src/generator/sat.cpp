@@ -8,6 +8,7 @@
 #include "generator/coplanar_patch.h"
 #include "generator/arc_bounds.h"
 #include "generator/edge_arcs.h"
+#include "generator/edge_pair_batch.h"
 #include "geometry/parallelepiped.h"
 #include "geometry/tolerances.h"
 
@@ -377,15 +378,39 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   if (row_bounds || !scan_pairs) measure_balls();
   const Vec3 centres = sb.centre - sa.centre;
   int back_a = 0, back_b = 0;  // where the last climbs against an axis ended
+  // The axis of an edge pair, unnormalised: A's edge crossed with B's.
+  const auto pair_axis = [&](int a0, int a1, int b0, int b1) {
+    return (a.world_vertex(a1) - a.world_vertex(a0)).cross(b.world_vertex(b1) - b.world_vertex(b0));
+  };
+  // One edge pair measured in full; false when it separates the hulls.
+  const auto measure_pair = [&](int i, const EdgeArc& x, int j) {
+    const ArcIndices& y = arcs_b.indices(j);
+    return consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
+      const EdgeArc arc_b = arcs_b[j];
+      return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(arc_b.n_face, arc_b.n_twin);
+    });
+  };
+  // Small hulls: the pairs that may cross wait in a batch for their
+  // projections (generator/edge_pair_batch.h), then are bounded, and those
+  // with a chance measured, in the order they came. False when a pair
+  // separates the hulls.
+  static thread_local EdgePairBatch batch;
+  batch.clear();
+  const auto settle_batch = [&] {
+    batch.project(a, b);
+    for (int k = 0; k < batch.size(); ++k) {
+      if (edge_hopeless(batch.least_overlap(k))) continue;
+      const int i = batch.arc_a(k);
+      if (!measure_pair(i, arcs_a[i], batch.arc_b(k))) return false;
+    }
+    batch.clear();
+    return true;
+  };
   const auto pair_is_hopeless = [&](const EdgeArc& x, const ArcIndices& y) {
     const Vec3 a0 = a.world_vertex(x.v0), b0 = b.world_vertex(y.v0);
-    const Vec3 axis = (a.world_vertex(x.v1) - a0).cross(b.world_vertex(y.v1) - b0);
+    const Vec3 axis = pair_axis(x.v0, x.v1, y.v0, y.v1);
     const double length = axis.norm();
     if (!(length > 0)) return false;
-    if (scan_pairs) {
-      const Interval ia = a.project(axis), ib = b.project(axis);
-      return edge_hopeless(std::min(ia.max - ib.min, ib.max - ia.min) / length);
-    }
     // m leaves A through its edge: along m the edges bound the overlap,
     // against m the balls inside the hulls about their centres do.
     const Vec3 m = (axis.dot(a0 - sa.centre) >= 0 ? axis : Vec3(-axis)) / length;
@@ -412,16 +437,21 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     const int top = a.climb_to_support(m, x.v0), bottom = b.climb_to_support(-m, y.v0);
     return edge_hopeless(m.dot(a.world_vertex(top)) - m.dot(b.world_vertex(bottom)));
   };
+  // A row: arc i of A against the arcs of B the lanes let through. False
+  // when a pair separates the hulls.
   const auto against = [&](int i, const EdgeArc& x, const int* js, int count) {
+    if (scan_pairs) {
+      if (!batch.has_room_for(count) && !settle_batch()) return false;
+      for (int k = 0; k < count; ++k) {
+        const ArcIndices& y = arcs_b.indices(js[k]);
+        if (arcs_b.may_cross(x, js[k])) batch.add(i, js[k], pair_axis(x.v0, x.v1, y.v0, y.v1));
+      }
+      return true;
+    }
     for (int k = 0; k < count; ++k) {
       const int j = js[k];
-      const ArcIndices& y = arcs_b.indices(j);
-      if (!arcs_b.may_cross(x, j) || pair_is_hopeless(x, y)) continue;
-      const bool apart = !consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
-        const EdgeArc arc_b = arcs_b[j];
-        return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(arc_b.n_face, arc_b.n_twin);
-      });
-      if (apart) return false;
+      if (!arcs_b.may_cross(x, j) || pair_is_hopeless(x, arcs_b.indices(j))) continue;
+      if (!measure_pair(i, x, j)) return false;
     }
     return true;
   };
@@ -435,6 +465,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
       const EdgeArc x = arcs_a[i];
       if (!against(i, x, near, arcs_b.crossing(x, near))) return best;
     }
+    settle_batch();
     return best;
   }
   // Whole rows at once, before their candidates are found: every pair in
@@ -468,6 +499,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     const EdgeArc x = arcs_a[i];
     if (!against(i, x, near, crossing_among(kept_b, kept, kept_index, x, near))) return best;
   }
+  settle_batch();
   return best;
 }
 

@@ -59,6 +59,17 @@ inline Interval columns_interval(const double* xs, const double* ys, const doubl
 Interval project_columns(const double* xs, const double* ys, const double* zs, int n, double ax, double ay,
                          double az);
 
+/// Every one of n points (columns xs, ys, zs) projected onto each of `count`
+/// axes (columns ax, ay, az, need not be unit): the least projection of
+/// each axis in `lowest`, the greatest in `highest`. Each is the same sum as
+/// columns_interval's, (x + y) + z, and min and max are exact, so every
+/// bound is the same bits as projecting onto its axis alone. Built for AVX2
+/// as well (geometry/vector_lanes.h). The brute-force SAT projects every
+/// edge pair's axis this way, a row of them at a time, and SAT on small
+/// hulls the axes of the pairs the Gauss-map test keeps.
+void project_onto_axes(const double* xs, const double* ys, const double* zs, int n, const double* ax,
+                       const double* ay, const double* az, int count, double* lowest, double* highest);
+
 class PosedHull {
  public:
   PosedHull(const mfz_hull& hull, const Pose& pose)
@@ -145,6 +156,14 @@ class PosedHull {
     }
     const double shift = world_axis.dot(pose_.position);
     return {range.min + shift, range.max + shift};
+  }
+
+  /// project() onto each of `count` world axes (columns ax, ay, az) at once,
+  /// by project_onto_axes: the same bits as one axis at a time. Only for a
+  /// hull whose world vertices are cached (kCachedVertices).
+  void project_onto_axes(const double* ax, const double* ay, const double* az, int count, double* lowest,
+                         double* highest) const {
+    mfz::project_onto_axes(xs_, ys_, zs_, hull_.vertex_count, ax, ay, az, count, lowest, highest);
   }
 
   /// Index of the vertex furthest along a world direction; the first of equals.
