@@ -84,12 +84,16 @@ check test "$status" -le 1
 check grep -q "resuming from" "$scratch/third.log"
 
 # 5. Ctrl-C: a clean stop, the summary so far, status 130, no fuzzer left.
+# A finding made before the interrupt takes status 1, as in any run: the
+# built-in has open findings (corpus/open/), and once in several CI runs
+# these five seconds found one (stop 42). Then the log must name it.
 "$manifuzz" fuzz --seconds 60 --corpus "$scratch/corpus-int" --out "$scratch/out-int" >/dev/null 2>"$scratch/int.log" &
 fuzzing=$!
 sleep 5
 kill -INT "$fuzzing"
 wait "$fuzzing"
-check test $? -eq 130
+status=$?
+check test "$status" -eq 130 -o \( "$status" -eq 1 -a -n "$(grep '^found ' "$scratch/int.log")" \)
 check grep -q "interrupted; the summary so far" "$scratch/int.log"
 sleep 1
 check test -z "$(pgrep -f "corpus-int" || true)"
