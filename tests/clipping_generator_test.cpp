@@ -5,6 +5,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <string>
+#include <utility>
 
 #include "case/case_file.h"
 #include "case/scene.h"
@@ -203,6 +205,22 @@ TEST(ClippingGenerator, EverySupportingEdgeIsTriedWhateverTheHullsNumbering) {
   }
 }
 
+// The contact counts of a regression case's scene as given and with both
+// poses moved by `move`: equal when a kept point's column is drawn alike.
+template <class Move>
+std::pair<int, int> contact_counts_as_given_and_moved(const std::string& regression, Move move) {
+  const CaseParse parsed = read_case_file(test::corpus_path("regressions/" + regression));
+  EXPECT_TRUE(parsed.value) << parsed.error;
+  if (!parsed.value) return {-1, -1};
+  const Scene s = *make_scene(*parsed.value).scene;
+  mfz_manifold as_given{}, moved{};
+  EXPECT_EQ(generate_clipping_manifold(s.hull_a.view(), s.abi_pose_a(), s.hull_b.view(), s.abi_pose_b(), as_given), 0);
+  EXPECT_EQ(generate_clipping_manifold(s.hull_a.view(), move(s.pose_a).to_abi(), s.hull_b.view(),
+                                       move(s.pose_b).to_abi(), moved),
+            0);
+  return {as_given.contact_count, moved.contact_count};
+}
+
 // A thin wedge 5e15 from the origin: the far end of its 2000-long edge
 // stands 63 beside the column of the corner kept at its near end, within the
 // world's rounding of the poses (about 72) that F30's column allows. The
@@ -210,19 +228,26 @@ TEST(ClippingGenerator, EverySupportingEdgeIsTriedWhateverTheHullsNumbering) {
 // drops that end too; measured on the largest coordinate, which the turn
 // made smaller, it kept it, 2000 from every contact (F35, rigid-motion).
 TEST(ClippingGenerator, AKeptPointsColumnIsAsWideInATurnedWorld) {
-  const CaseParse parsed = read_case_file(
-      test::corpus_path("regressions/f35-a-thin-wedge-5e15-out-gains-a-contact-2000-away-when-moved.case"));
-  ASSERT_TRUE(parsed.value) << parsed.error;
-  const Scene s = *make_scene(*parsed.value).scene;
   const Quat turn(Eigen::AngleAxisd(0.9, Vec3(1, 2, 3).normalized()));
-  const auto turned = [&](const Pose& p) { return Pose{turn * p.position, (turn * p.orientation).normalized()}; };
-  mfz_manifold as_given{}, in_turned_world{};
-  ASSERT_EQ(generate_clipping_manifold(s.hull_a.view(), s.abi_pose_a(), s.hull_b.view(), s.abi_pose_b(), as_given), 0);
-  ASSERT_EQ(generate_clipping_manifold(s.hull_a.view(), turned(s.pose_a).to_abi(), s.hull_b.view(),
-                                       turned(s.pose_b).to_abi(), in_turned_world),
-            0);
-  EXPECT_EQ(as_given.contact_count, 3);
-  EXPECT_EQ(in_turned_world.contact_count, as_given.contact_count);
+  const auto [as_given, turned] = contact_counts_as_given_and_moved(
+      "f35-a-thin-wedge-5e15-out-gains-a-contact-2000-away-when-moved.case",
+      [&](const Pose& p) { return Pose{turn * p.position, (turn * p.orientation).normalized()}; });
+  EXPECT_EQ(as_given, 3);
+  EXPECT_EQ(turned, as_given);
+}
+
+// A slab's edge 1e-3 long, 4.4e-6 rad off the normal, 3e5 from the origin:
+// its far end stands 4.4e-9 beside the column of the point kept at its
+// deeper end, between the world's rounding there (4.3e-9) and 2.7e4 further
+// out (4.6e-9). The column is the same in both frames, and drops that end
+// in both (F46, far-from-origin, open as O13).
+TEST(ClippingGenerator, AKeptPointsColumnIsAsWideMovedFurtherFromTheOrigin) {
+  const Vec3 out(15407.9289055036, -20543.905207338135, 7703.9644527518);
+  const auto [as_given, moved_out] = contact_counts_as_given_and_moved(
+      "f46-a-slab-s-edge-4e-9-beside-a-kept-point-s-column-far-out-adds-a-point-in-one-frame.case",
+      [&](const Pose& p) { return Pose{p.position + out, p.orientation}; });
+  EXPECT_EQ(as_given, 3);
+  EXPECT_EQ(moved_out, as_given);
 }
 
 // The sides kept once per call are the sides computed as each is clipped
@@ -262,6 +287,73 @@ TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachC
     ASSERT_GT(kept.size(), 4) << corners << " corners: the square is clipped";
     for (int k = 0; k < kept.size(); ++k) EXPECT_EQ(kept[k], computed[k]) << corners << " corners, point " << k;
   }
+}
+
+// A needle face 28 long, its base 3.4e-13 wide (a tip of sine 1.2e-14),
+// 5e5 from the origin, and a triangle across its tip. The two long sides'
+// crossing, rounded, lay 4.97e-4 past the tip, and the clip kept a point
+// there, outside the hull; the tip's cap holds the clip to it (F45, open
+// as O12).
+TEST(ClippingGenerator, ATriangleAcrossTheTipOfANeedleFaceFarOutIsClippedAtTheTip) {
+  const Vec3 at(290195.14842605474, -386991.9424289519, 145111.51946893);
+  ClipPolygon loop, incident;
+  for (const Vec3& v : {Vec3(27.890015221084642, 27.890015221084642, 0), Vec3(27.89001522108361, 27.890015221084642, 28),
+                        Vec3(27.89001522108395, 27.890015221084642, 28)})
+    loop.push(v + at);
+  for (const Vec3& p : {Vec3(290223.03843785997, -386964.05241714668, 145111.51996892999),
+                        Vec3(290223.03843785997, -386964.05241714668, 145111.51896893),
+                        Vec3(290223.03893785999, -386964.05241714668, 145111.51946893)})
+    incident.push(p);
+  ClipFace reference;
+  reference.normal = Vec3(0, 1, 0);
+  reference.polygon = &loop;
+  reference.world_resolution = at.norm();
+  PrismSides sides;
+  keep_prism_sides(reference, sides);
+  for (const bool kept : {false, true}) {
+    reference.sides = kept ? &sides : nullptr;
+    ClipPolygon clipped = incident;
+    ASSERT_TRUE(clip_to_reference_prism(reference, clipped, nullptr));
+    ASSERT_FALSE(clipped.empty());
+    // The needle runs up +z from its tip, loop[0].
+    for (int k = 0; k < clipped.size(); ++k)
+      EXPECT_LE(loop[0].z() - clipped[k].z(), 1e-9) << (kept ? "kept" : "computed") << " sides, point " << k;
+  }
+}
+
+TEST(SharpCornerCap, OnlyANeedlesTipHasOneAndTheWholeFaceLiesBehindIt) {
+  ClipPolygon needle;
+  // A tip of sine 2e-6: its sides cross up to 7e-9 from it.
+  for (const Vec3& v : {Vec3(0, 0, 0), Vec3(1, 1e-6, 0), Vec3(1, -1e-6, 0)}) needle.push(v);
+  const double rounding = tol::world_rounding(1);
+  Plane cap;
+  ASSERT_TRUE(sharp_corner_cap(needle, 0, rounding, cap));
+  EXPECT_NEAR(cap.normal.dot(Vec3(-1, 0, 0)), 1, 1e-12);
+  for (int k = 0; k < needle.size(); ++k) EXPECT_LE(cap.signed_distance(needle[k]), rounding) << "corner " << k;
+  EXPECT_FALSE(sharp_corner_cap(needle, 1, rounding, cap)) << "a corner of nearly 90 degrees";
+  EXPECT_FALSE(sharp_corner_cap(needle, 2, rounding, cap)) << "a corner of nearly 90 degrees";
+}
+
+TEST(SharpCornerCap, OrdinaryCornersNearTheOriginHaveNone) {
+  ClipPolygon square, sliver;
+  for (const Vec3& v : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) square.push(v);
+  // A corner of sine 1e-3: the sides cross within 1e-12 of it.
+  for (const Vec3& v : {Vec3(0, 0, 0), Vec3(1, 1e-3, 0), Vec3(1, 0, 0)}) sliver.push(v);
+  Plane cap;
+  for (int k = 0; k < 4; ++k) EXPECT_FALSE(sharp_corner_cap(square, k, tol::world_rounding(1), cap)) << "corner " << k;
+  for (int k = 0; k < 3; ++k) EXPECT_FALSE(sharp_corner_cap(sliver, k, tol::world_rounding(1), cap)) << "corner " << k;
+  // Moved 1e6 out, the same sliver's sides may cross 1.4e-5 from its tip.
+  EXPECT_TRUE(sharp_corner_cap(sliver, 0, tol::world_rounding(1e6), cap));
+}
+
+TEST(SharpCornerCap, ACornerBesideAnEdgeTooShortForItsDirectionHasNone) {
+  // The edge from corner 1 to corner 2 is 1e-13 long: its direction is
+  // rounding, and a cap leaning on it could cut the face.
+  ClipPolygon loop;
+  for (const Vec3& v : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1 - 1e-13, 1e-14, 0), Vec3(0, 1, 0)}) loop.push(v);
+  Plane cap;
+  EXPECT_FALSE(sharp_corner_cap(loop, 1, tol::world_rounding(1), cap));
+  EXPECT_FALSE(sharp_corner_cap(loop, 2, tol::world_rounding(1), cap));
 }
 
 // A side every point lies inside is passed over. Clipping against every

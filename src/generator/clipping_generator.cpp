@@ -167,14 +167,25 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   // 1.1e-6 rad off perpendicular stood 2.3e-10 beside a kept point, 2.1e-4
   // higher: within the rounding 1e4 L out, beyond it at the origin, and
   // far-from-origin dropped the point the original kept (--strict --seed
-  // 2026112503). Within 1e-9 of the reference face's perimeter it adds
-  // nothing to the region's span, and the perimeter is the same in every
+  // 2026112503). Within a small part of the reference face's perimeter it
+  // adds nothing to the region's span, and the perimeter is the same in every
   // frame (a bounding box's diagonal is not: turned, it moved the column
   // past a point 1.4e-9 beside a cylinder's, rigid-motion, the same seed).
+  // F46: the column must also stand well clear of the world's rounding,
+  // which still widened it far out. 3e5 L from the origin, 1e-9 of the
+  // perimeter (3.6e-9) was below the rounding (4.3e-9, and 4.6e-9 moved
+  // 2.7e4 further), and a slab's edge 1e-3 long, 4.4e-6 rad off the normal,
+  // stood 4.4e-9 beside the kept point at its deeper end: the moved frame
+  // dropped its other end, the case's frame kept it, 1e-3 from every
+  // contact (far-from-origin, --strict --seed 946867892, open as O13).
+  // A face's perimeter is at most pi times its hull's diameter, so 1e-7 of
+  // it is under a third of what a relation or the region's span can tell
+  // (1e-6 L), and it is 80 times the rounding that far out.
+  constexpr double kColumnOverPerimeter = 1e-7;
   const ClipPolygon& loop = *reference.polygon;
   double perimeter = 0;
   for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
-  const double column = tol::kTie * perimeter;
+  const double column = kColumnOverPerimeter * perimeter;
   // The shortcut stands for the built-in's own steps only: a mutant's
   // patch or clip is run as it is.
   const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
@@ -251,11 +262,50 @@ bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edg
   return true;
 }
 
+// F44, F45: the two sides at a corner of angle t cross where the clip puts
+// the corner only to their rounding over sin t, along its bisector. The cap
+// through the corner across its bisector is known to the rounding of the
+// corner itself, since its direction comes from the two long edges, not
+// from their crossing. A sliver face 1.3e-3 long with a corner of sine
+// 9e-11 let a face below the reference plane keep a point 1.26e-6 L past
+// that corner (open as O11); a needle face 28 long, its base 3.4e-13 wide
+// (t = 1.2e-14), 5e5 from the origin, let a contact stand 4.97e-4 past its
+// tip, outside the hull, the sides' rounding over t being longer than the
+// needle (far-from-origin, open as O12).
+bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap) {
+  // Directions known to 1e-3 rad at worst: an acute corner's caps may lean
+  // by nearly 45 degrees and still leave the polygon behind them.
+  constexpr double kEdgeOverRounding = 1e3;
+  const int n = loop.size();
+  const Vec3& corner = loop[k];
+  const Vec3 in = corner - loop[(k + n - 1) % n], out = loop[(k + 1) % n] - corner;
+  const double in_length = in.norm(), out_length = out.norm();
+  if (!(std::min(in_length, out_length) > kEdgeOverRounding * rounding)) return false;
+  const Vec3 along_in = in / in_length, along_out = out / out_length;
+  if (!(along_in.dot(along_out) < 0)) return false;  // a right or obtuse corner
+  const double sine = along_in.cross(along_out).norm();
+  if (!(sine * tol::kTie * std::max(in_length, out_length) < rounding)) return false;
+  // |along_in - along_out| is at least sqrt(2) at an acute corner.
+  const Vec3 bisector = (along_in - along_out).normalized();
+  cap = Plane{bisector, bisector.dot(corner)};
+  return true;
+}
+
+double corner_rounding(const ClipFace& reference) {
+  const double largest = reference.sides ? reference.sides->largest : largest_coordinate(*reference.polygon);
+  return tol::world_rounding(std::max(largest, reference.world_resolution));
+}
+
 void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   const int n = reference.polygon->size();
   sides.count = n <= kKeptPrismSides ? n : 0;
   for (int k = 0; k < sides.count; ++k) sides.spans[k] = reference_side(reference, k, sides.plane[k], sides.edge[k]);
   sides.largest = largest_coordinate(*reference.polygon);
+  sides.cap_count = 0;
+  if (sides.count == 0) return;
+  const double rounding = tol::world_rounding(std::max(sides.largest, reference.world_resolution));
+  for (int k = 0; k < sides.count; ++k)
+    if (sharp_corner_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
 }
 
 
@@ -278,6 +328,37 @@ bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane)
 // of a many-sided reference face clip nothing (a 64-gon cylinder's cap
 // clipped 28 side faces of the other cylinder a call through its 64 sides,
 // a third of the call, to add a point twice in 7,242 faces).
+bool clip_to_side(ClipPolygon& incident, const Plane& side, const SideEdge* edge, const SideBands& bands,
+                  ClipPolygon& scratch) {
+  if (inside_side(incident, side, bands.on_plane)) return true;
+  if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, edge)) return false;
+  incident.take(scratch);
+  return true;
+}
+
+// After the sides: a cap's crossings lie on the sides' crossings already
+// made, and a cap's own foot crossing needs no edge to lie along, every
+// point being inside the sides by then.
+bool clip_to_sharp_corner_caps(const ClipFace& reference, ClipPolygon& incident, const SideBands& bands,
+                               ClipPolygon& scratch, ClipTrace* trace) {
+  const PrismSides* kept = reference.sides;
+  const auto clip_cap = [&](const Plane& cap) {
+    if (!clip_to_side(incident, cap, nullptr, bands, scratch)) return false;
+    if (trace) record(trace, "clipped against the cap of a sharp corner of the reference face", incident);
+    return true;
+  };
+  if (kept && kept->count > 0) {
+    for (int c = 0; c < kept->cap_count; ++c)
+      if (!clip_cap(kept->cap[c])) return false;
+    return true;
+  }
+  const double rounding = corner_rounding(reference);
+  Plane cap;
+  for (int k = 0; k < reference.polygon->size(); ++k)
+    if (sharp_corner_cap(*reference.polygon, k, rounding, cap) && !clip_cap(cap)) return false;
+  return true;
+}
+
 bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPolygon& scratch, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
   Plane computed;
@@ -285,14 +366,11 @@ bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPol
   for (int k = 0; k < reference.polygon->size(); ++k) {
     const PrismSide side = prism_side(reference, k, computed, computed_edge);
     if (!side.plane) continue;
-    if (!inside_side(incident, *side.plane, bands.on_plane)) {
-      if (!clip_to_plane(incident, *side.plane, scratch, bands.on_plane, bands.near_plane, side.edge)) return false;
-      incident.take(scratch);
-    }
+    if (!clip_to_side(incident, *side.plane, side.edge, bands, scratch)) return false;
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
   }
-  return true;
+  return clip_to_sharp_corner_caps(reference, incident, bands, scratch, trace);
 }
 
 // Apart, so that its polygon is on the stack only when the caller gave no

@@ -43,6 +43,9 @@ struct PrismSides {
   Plane plane[kKeptPrismSides];
   SideEdge edge[kKeptPrismSides];
   bool spans[kKeptPrismSides];  ///< false for an edge of no length
+  /// The caps of the loop's sharp corners (sharp_corner_cap), in loop order.
+  Plane cap[kKeptPrismSides];
+  int cap_count = 0;
   /// The loop's largest coordinate, which side_bands reads for every face
   /// clipped (kept whatever the loop's size).
   double largest = 0;
@@ -118,9 +121,21 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
 /// edge itself (F36 bounds a foot crossing by it). False for an edge of no
 /// length.
 bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge);
+/// The cap of corner k of a reference loop: the plane through the corner
+/// across its bisector, facing out, when the corner is so sharp that its two
+/// sides, each placed to `rounding`, may cross further than 1e-9 of its
+/// longer edge from it (rounding over the corner's sine). False for any other
+/// corner, and for one whose edges are too short for their directions to
+/// be known. The polygon lies behind the cap, so clipping against it takes
+/// nothing away; it holds the clip to the corner where the sides do not.
+bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap);
+/// The rounding sharp_corner_cap is given for the reference face: the
+/// world's, at the larger of the loop's largest coordinate and the frame's
+/// resolution.
+double corner_rounding(const ClipFace& reference);
 /// Computes each side of the prism over `reference`'s polygon into `sides`,
-/// when it has at most kKeptPrismSides corners (else sides.count is 0), and
-/// the loop's largest coordinate.
+/// when it has at most kKeptPrismSides corners (else sides.count is 0), the
+/// caps of its sharp corners, and the loop's largest coordinate.
 void keep_prism_sides(const ClipFace& reference, PrismSides& sides);
 /// Side k of the reference prism and the edge it stands on: the kept ones,
 /// read where they are, when `reference` has them, else reference_side's,
