@@ -14,9 +14,12 @@ namespace mfz {
 inline constexpr int kMaxPolygonVertices = 512;
 
 /// The plane `normal . x = offset`; its inside is `normal . x <= offset`.
+/// Left unset when declared (as Vec3 is): the reference prism's kept sides
+/// and caps are arrays of 64, set only as far as the loop goes, and setting
+/// each on every call cost more than computing a square's four sides.
 struct Plane {
   Vec3 normal;
-  double offset = 0;
+  double offset;
   double signed_distance(const Vec3& p) const { return normal.dot(p) - offset; }
 };
 

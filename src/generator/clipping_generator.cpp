@@ -279,12 +279,17 @@ bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& ca
   const int n = loop.size();
   const Vec3& corner = loop[k];
   const Vec3 in = corner - loop[(k + n - 1) % n], out = loop[(k + 1) % n] - corner;
-  const double in_length = in.norm(), out_length = out.norm();
-  if (!(std::min(in_length, out_length) > kEdgeOverRounding * rounding)) return false;
-  const Vec3 along_in = in / in_length, along_out = out / out_length;
-  if (!(along_in.dot(along_out) < 0)) return false;  // a right or obtuse corner
-  const double sine = along_in.cross(along_out).norm();
-  if (!(sine * tol::kTie * std::max(in_length, out_length) < rounding)) return false;
+  // Every corner is tested, on every call: in squares, with no root or
+  // quotient until a corner proves sharp.
+  if (!(in.dot(out) < 0)) return false;  // a right or obtuse corner
+  const double in_squared = in.squaredNorm(), out_squared = out.squaredNorm();
+  const double shortest = kEdgeOverRounding * rounding;
+  if (!(std::min(in_squared, out_squared) > shortest * shortest)) return false;
+  // sin t = |in x out| / (|in| |out|); sharp where sin t 1e-9 |longer| < rounding.
+  const double sine_squared = in.cross(out).squaredNorm() / in_squared / out_squared;
+  const double bound = rounding / tol::kTie;
+  if (!(sine_squared * std::max(in_squared, out_squared) < bound * bound)) return false;
+  const Vec3 along_in = in / std::sqrt(in_squared), along_out = out / std::sqrt(out_squared);
   // |along_in - along_out| is at least sqrt(2) at an acute corner.
   const Vec3 bisector = (along_in - along_out).normalized();
   cap = Plane{bisector, bisector.dot(corner)};
@@ -304,7 +309,7 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   sides.cap_count = 0;
   if (sides.count == 0) return;
   const double rounding = tol::world_rounding(std::max(sides.largest, reference.world_resolution));
-  for (int k = 0; k < sides.count; ++k)
+  for (int k = 0; k < sides.count && sides.cap_count < PrismSides::kMaxCaps; ++k)
     if (sharp_corner_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
 }
 

@@ -43,8 +43,13 @@ struct PrismSides {
   Plane plane[kKeptPrismSides];
   SideEdge edge[kKeptPrismSides];
   bool spans[kKeptPrismSides];  ///< false for an edge of no length
-  /// The caps of the loop's sharp corners (sharp_corner_cap), in loop order.
-  Plane cap[kKeptPrismSides];
+  /// The caps of the loop's sharp corners (sharp_corner_cap), in loop
+  /// order. A sharp corner is acute, and a convex loop has at most three
+  /// acute corners (their outer angles, each over 90 degrees, sum to at most
+  /// 360); one more is room for a loop that rounding bends. Room for one a
+  /// side put the sanitized build's call past 64 KiB of stack (66,616 bytes).
+  static constexpr int kMaxCaps = 4;
+  Plane cap[kMaxCaps];
   int cap_count = 0;
   /// The loop's largest coordinate, which side_bands reads for every face
   /// clipped (kept whatever the loop's size).
