@@ -250,6 +250,22 @@ TEST(ClippingGenerator, AKeptPointsColumnIsAsWideMovedFurtherFromTheOrigin) {
   EXPECT_EQ(moved_out, as_given);
 }
 
+// A needle 9900 long across n, its long edge 2.7e-4 rad from B's edge:
+// turned and moved 7.6e3 out, the axis those edges make leaves the far end
+// 2.5e-10 below the near one. Within 1e-9 of the needle's span the edge
+// still supports A, and the pair crosses: one contact in both frames, where
+// the moved run clipped faces on the edge axis and gave six, three of them
+// 0.118 off B (F47, rigid-motion, open as O14).
+TEST(ClippingGenerator, TheEdgeAnAxisCameFromStillSupportsItsHullTurnedAndMovedOut) {
+  const Quat turn(0.9004471023526769, 0.11624942883566838, 0.23249885767133677, 0.3487482865070052);
+  const Vec3 shift(6930.000350000071, -2970.0001500000303, 1980.0001000000204);
+  const auto [as_given, moved] = contact_counts_as_given_and_moved(
+      "f47-a-needle-across-n-turned-and-moved-out-lost-the-edge-its-axis-came-from.case",
+      [&](const Pose& p) { return Pose{turn * p.position + shift, (turn * p.orientation).normalized()}; });
+  EXPECT_EQ(as_given, 1);
+  EXPECT_EQ(moved, as_given);
+}
+
 // The sides kept once per call are the sides computed as each is clipped
 // against, to the bit: a 6-gon's kept, a 100-gon's (past kKeptPrismSides)
 // computed, and a tilted square clipped against each gives the same points

@@ -28,7 +28,14 @@ struct Segment {
 // away, and the edge SAT's axis came from, 2.7e-15 below an edge 3.6e-12
 // long at the tip, was left out (a slack of 4.9e-16); no pair crossed, and
 // the driver clipped a sliver face 15 degrees off n (F31, open as O3 since
-// the first campaigns).
+// the first campaigns). Nor is the hull's extent along n the measure of a
+// tie: a needle 9900 long lies across n, 6.9e-4 deep along it, and its long
+// edge, 2.7e-4 rad from the other hull's, made the axis; turned and moved
+// 7.6e3 out, the axis's rounding over that angle left the edge's far end
+// 2.5e-10 below its near end, past 1e-9 of 6.9e-4 and the rounding of
+// 9900. Only the short edge beside it supported A, no pair crossed, and
+// the driver clipped faces 0.118 off B (F47, rigid-motion, open as O14).
+// 1e-9 of the hull's span, a size no pose changes, holds it.
 // They are visited, not listed: any cap on their number lets the hull's
 // numbering pick which are left out. A needle 1.3e-8 thin and 16000 long has
 // 45 edges within the world's rounding of its reach, 13 of them crossing B's
@@ -51,7 +58,8 @@ class SupportingEdges {
     each_edge([&](int, int, double reach, const auto& is_flat) {
       if (reach > best && !is_flat()) best = reach;
     });
-    threshold_ = best - (tol::kTie * (best - lowest) + tol::world_rounding(std::max(std::abs(best), extent)));
+    threshold_ = best - (tol::kTie * std::max(best - lowest, hull.span()) +
+                         tol::world_rounding(std::max(std::abs(best), extent)));
   }
 
   /// Calls `visit(segment)` for each supporting edge, in the hull's order.
