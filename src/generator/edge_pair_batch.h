@@ -12,6 +12,10 @@
 /// The batch only moves the projections earlier: SAT then takes its pairs in
 /// the order it found them and bounds each against its best axis at that
 /// moment, as before, so every answer is the one a pair at a time gives.
+/// A pair with a chance is measured on the batch's own projections, made
+/// onto the unit axis the full measure uses: measuring projected both hulls
+/// again, and on cylinders of 64 vertices, whose rims' pairs all tie with
+/// a cap, that was 8% of a grown fuzz corpus's instructions.
 #include <cmath>
 #include <limits>
 
@@ -28,10 +32,16 @@ class EdgePairBatch {
   bool has_room_for(int pairs) const { return count_ + pairs <= kCapacity; }
   void clear() { count_ = 0; }
 
-  /// Arc i of A with arc j of B, whose edges' cross product is `axis`.
+  /// Arc i of A with arc j of B, whose edges' cross product is `axis`:
+  /// kept as the unit axis `axis / |axis|`, the bits SAT's full measure of
+  /// the pair divides out, so that the projections here are the ones it
+  /// would make (a zero axis is kept as it is, and bounds nothing).
   void add(int i, int j, const Vec3& axis) {
+    const double length = axis.norm();
+    const Vec3 unit = length > 0 ? Vec3(axis / length) : axis;
     arc_a_[count_] = i, arc_b_[count_] = j;
-    axis_x_[count_] = axis.x(), axis_y_[count_] = axis.y(), axis_z_[count_] = axis.z();
+    axis_x_[count_] = unit.x(), axis_y_[count_] = unit.y(), axis_z_[count_] = unit.z();
+    length_[count_] = length;
     ++count_;
   }
   int arc_a(int k) const { return arc_a_[k]; }
@@ -43,13 +53,19 @@ class EdgePairBatch {
     b.project_onto_axes(axis_x_, axis_y_, axis_z_, count_, min_b_, max_b_);
   }
 
-  /// Pair k's overlap, the lesser of its axis's two ways, over the axis's
-  /// length: a lower bound on the overlap its unit axis gives. Minus
-  /// infinity (bounds nothing) for parallel edges, which span no axis.
+  /// Pair k's unit axis, and the length of the cross product it came from.
+  Vec3 axis(int k) const { return {axis_x_[k], axis_y_[k], axis_z_[k]}; }
+  double axis_length(int k) const { return length_[k]; }
+  /// A's and B's projections onto pair k's unit axis: project()'s bits.
+  Interval projection_a(int k) const { return {min_a_[k], max_a_[k]}; }
+  Interval projection_b(int k) const { return {min_b_[k], max_b_[k]}; }
+
+  /// Pair k's overlap, the lesser of its axis's two ways: the overlap the
+  /// pair's full measure finds. Minus infinity (bounds nothing) for edges
+  /// whose cross product vanishes.
   double least_overlap(int k) const {
-    const double length = Vec3(axis_x_[k], axis_y_[k], axis_z_[k]).norm();
-    if (!(length > 0)) return -std::numeric_limits<double>::infinity();
-    return std::min(max_a_[k] - min_b_[k], max_b_[k] - min_a_[k]) / length;
+    if (!(length_[k] > 0)) return -std::numeric_limits<double>::infinity();
+    return std::min(max_a_[k] - min_b_[k], max_b_[k] - min_a_[k]);
   }
 
  private:
@@ -57,6 +73,7 @@ class EdgePairBatch {
   int arc_a_[kCapacity], arc_b_[kCapacity];
   double axis_x_[kCapacity], axis_y_[kCapacity], axis_z_[kCapacity];
   double min_a_[kCapacity], max_a_[kCapacity], min_b_[kCapacity], max_b_[kCapacity];
+  double length_[kCapacity];
 };
 
 }  // namespace mfz

@@ -100,25 +100,39 @@ bool consider(const PosedHull& a, const PosedHull& b, const Vec3& axis, AxisKind
   return consider_projected(a, b, a.project(axis), b.project(axis), axis, kind, fa, fb, best);
 }
 
-// One edge pair's axis. Returns false when it separates. `flat` says whether
-// either edge lies between coplanar faces; it is asked only of an axis about
-// to win.
+// One edge pair's unit axis, with both hulls' projections onto it. Returns
+// false when it separates. `flat` says whether either edge lies between
+// coplanar faces; it is asked only of an axis about to win.
 template <class FlatTest>
-bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, int a1, int eb, int b0, int b1,
-                        SatResult& best, FlatTest&& flat) {
-  const Vec3 edge_a = a.world_vertex(a1) - a.world_vertex(a0);
-  const Vec3 edge_b = b.world_vertex(b1) - b.world_vertex(b0);
-  const Vec3 axis = edge_a.cross(edge_b);
-  const double length = axis.norm();
-  // Parallel edges span no new axis (a face normal covers it); dividing by
-  // a vanishing length would only amplify rounding.
-  if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+bool consider_projected_pair(const PosedHull& a, const PosedHull& b, const Interval& ia, const Interval& ib,
+                             const Vec3& axis, int ea, int eb, SatResult& best, FlatTest&& flat) {
   SatResult candidate = best;
-  const bool separated = !consider(a, b, axis / length, AxisKind::edge_edge, ea, eb, candidate);
+  const bool separated = !consider_projected(a, b, ia, ib, axis, AxisKind::edge_edge, ea, eb, candidate);
   if (!separated && candidate.depth == best.depth) return true;
   if (flat()) return true;
   best = candidate;
   return !separated;
+}
+
+// Whether edges are parallel: they span no new axis (a face normal covers
+// it), and dividing by a vanishing length would only amplify rounding.
+// `length` is their cross product's.
+bool parallel_edges(const Vec3& edge_a, const Vec3& edge_b, double length) {
+  return length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm();
+}
+
+Vec3 world_edge(const PosedHull& hull, int v0, int v1) { return hull.world_vertex(v1) - hull.world_vertex(v0); }
+
+// One edge pair's axis, measured in full. Returns false when it separates.
+template <class FlatTest>
+bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, int a1, int eb, int b0, int b1,
+                        SatResult& best, FlatTest&& flat) {
+  const Vec3 edge_a = world_edge(a, a0, a1), edge_b = world_edge(b, b0, b1);
+  const Vec3 axis = edge_a.cross(edge_b);
+  const double length = axis.norm();
+  if (parallel_edges(edge_a, edge_b, length)) return true;
+  const Vec3 unit = axis / length;
+  return consider_projected_pair(a, b, a.project(unit), b.project(unit), unit, ea, eb, best, flat);
 }
 
 // Every edge pair: the reference the pruning is checked against, and the
@@ -380,28 +394,36 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   int back_a = 0, back_b = 0;  // where the last climbs against an axis ended
   // The axis of an edge pair, unnormalised: A's edge crossed with B's.
   const auto pair_axis = [&](int a0, int a1, int b0, int b1) {
-    return (a.world_vertex(a1) - a.world_vertex(a0)).cross(b.world_vertex(b1) - b.world_vertex(b0));
+    return world_edge(a, a0, a1).cross(world_edge(b, b0, b1));
+  };
+  // Whether A's arc x or B's arc j spans no fold: an edge between
+  // coplanar faces gives no axis (F4).
+  const auto is_flat_pair = [&](const EdgeArc& x, int j) {
+    const EdgeArc arc_b = arcs_b[j];
+    return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(arc_b.n_face, arc_b.n_twin);
   };
   // One edge pair measured in full; false when it separates the hulls.
   const auto measure_pair = [&](int i, const EdgeArc& x, int j) {
     const ArcIndices& y = arcs_b.indices(j);
-    return consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] {
-      const EdgeArc arc_b = arcs_b[j];
-      return coplanar_normals(x.n_face, x.n_twin) || coplanar_normals(arc_b.n_face, arc_b.n_twin);
-    });
+    return consider_edge_pair(a, b, i, x.v0, x.v1, j, y.v0, y.v1, best, [&] { return is_flat_pair(x, j); });
   };
   // Small hulls: the pairs that may cross wait in a batch for their
   // projections (generator/edge_pair_batch.h), then are bounded, and those
-  // with a chance measured, in the order they came. False when a pair
-  // separates the hulls.
+  // with a chance measured on those projections, in the order they came.
+  // False when a pair separates the hulls.
   static thread_local EdgePairBatch batch;
   batch.clear();
   const auto settle_batch = [&] {
     batch.project(a, b);
     for (int k = 0; k < batch.size(); ++k) {
       if (edge_hopeless(batch.least_overlap(k))) continue;
-      const int i = batch.arc_a(k);
-      if (!measure_pair(i, arcs_a[i], batch.arc_b(k))) return false;
+      const int i = batch.arc_a(k), j = batch.arc_b(k);
+      const EdgeArc x = arcs_a[i];
+      const ArcIndices& y = arcs_b.indices(j);
+      if (parallel_edges(world_edge(a, x.v0, x.v1), world_edge(b, y.v0, y.v1), batch.axis_length(k))) continue;
+      if (!consider_projected_pair(a, b, batch.projection_a(k), batch.projection_b(k), batch.axis(k), i, j, best,
+                                   [&] { return is_flat_pair(x, j); }))
+        return false;
     }
     batch.clear();
     return true;
