@@ -135,6 +135,35 @@ bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, 
   return consider_projected_pair(a, b, a.project(unit), b.project(unit), unit, ea, eb, best, flat);
 }
 
+// Whether an edge pair's axis (unnormalised) lies along a face normal at an
+// end of either arc, to tol::kAxisAlongFaceSine: where the arcs meet at an
+// end, or an end of one lies on the other's circle, the pair spans no face
+// of A - B but that face's own. In the direction where the pair's edges
+// support their hulls, the face's axis has the pair's overlap (to the
+// tilt, short of F3's bias: the pair could not beat it); the other way the
+// overlap is at least the depth, which the faces of A - B attain. SAT has
+// measured or bounded every face before the edge pairs, so such a pair
+// changes nothing, and it is dropped before it is projected (small hulls
+// only: large ones bound a pair by balls and climbs, not projections). A
+// cylinder's rim edges against the other cylinder's rim all meet at the
+// caps' normals: in a grown fuzz corpus of 2,700 inputs, 61% of the pairs
+// SAT projected were these, and its replay took 1.81-1.86 s where it took
+// 2.00-2.04; random 8-point hulls, whose arcs seldom meet at an end, take
+// 2.9% more instructions a call for the test.
+bool axis_along_arc_end(const Vec3& axis, const EdgeArc& x, const EdgeArc& y) {
+  // First the ends against the other's circle: an axis along an end has
+  // that end on both circles, within the sine of the circle's pole (whose
+  // length is at most 1). Four dot products, where the cross products
+  // below cost the 8-point hulls' calls 6% more instructions.
+  constexpr double near = 2 * tol::kAxisAlongFaceSine;
+  const double ends = std::min(std::min(std::abs(y.n_face.dot(x.across)), std::abs(y.n_twin.dot(x.across))),
+                               std::min(std::abs(x.n_face.dot(y.across)), std::abs(x.n_twin.dot(y.across))));
+  if (!(ends <= near)) return false;
+  const double room = tol::kAxisAlongFaceSine * tol::kAxisAlongFaceSine * axis.squaredNorm();
+  return axis.cross(x.n_face).squaredNorm() <= room || axis.cross(x.n_twin).squaredNorm() <= room ||
+         axis.cross(y.n_face).squaredNorm() <= room || axis.cross(y.n_twin).squaredNorm() <= room;
+}
+
 // Every edge pair: the reference the pruning is checked against, and the
 // fallback for a hull whose edge arcs are incomplete.
 void all_edge_pairs(const PosedHull& a, const PosedHull& b, SatResult& best) {
@@ -428,9 +457,8 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     batch.clear();
     return true;
   };
-  const auto pair_is_hopeless = [&](const EdgeArc& x, const ArcIndices& y) {
+  const auto pair_is_hopeless = [&](const EdgeArc& x, const ArcIndices& y, const Vec3& axis) {
     const Vec3 a0 = a.world_vertex(x.v0), b0 = b.world_vertex(y.v0);
-    const Vec3 axis = pair_axis(x.v0, x.v1, y.v0, y.v1);
     const double length = axis.norm();
     if (!(length > 0)) return false;
     // m leaves A through its edge: along m the edges bound the overlap,
@@ -465,14 +493,20 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     if (scan_pairs) {
       if (!batch.has_room_for(count) && !settle_batch()) return false;
       for (int k = 0; k < count; ++k) {
-        const ArcIndices& y = arcs_b.indices(js[k]);
-        if (arcs_b.may_cross(x, js[k])) batch.add(i, js[k], pair_axis(x.v0, x.v1, y.v0, y.v1));
+        const int j = js[k];
+        if (!arcs_b.may_cross(x, j)) continue;
+        const ArcIndices& y = arcs_b.indices(j);
+        const Vec3 axis = pair_axis(x.v0, x.v1, y.v0, y.v1);
+        if (!axis_along_arc_end(axis, x, arcs_b[j])) batch.add(i, j, axis);
       }
       return true;
     }
     for (int k = 0; k < count; ++k) {
       const int j = js[k];
-      if (!arcs_b.may_cross(x, j) || pair_is_hopeless(x, arcs_b.indices(j))) continue;
+      if (!arcs_b.may_cross(x, j)) continue;
+      const ArcIndices& y = arcs_b.indices(j);
+      const Vec3 axis = pair_axis(x.v0, x.v1, y.v0, y.v1);
+      if (pair_is_hopeless(x, y, axis)) continue;
       if (!measure_pair(i, x, j)) return false;
     }
     return true;

@@ -185,6 +185,13 @@ inline constexpr double kEdgeAxisBias = 1e-9;
 /// crossing the edge axis is within that angle of a face axis, which F3
 /// prefers anyway.
 inline constexpr double kGaussArcSlack = 1e-9;
+/// Generator: an edge pair whose axis is within this sine of a face normal
+/// at an end of either edge's Gauss arc is that face's axis again, and SAT
+/// does not project the hulls onto it (sat.cpp). Tilted this far, an
+/// axis's overlap moves by 1e-11 of the hulls' span, a hundredth of
+/// kEdgeAxisBias, so the pair could not have beaten the face; it is ten
+/// times the 1e-12 a hull's stored normals may sit off its vertices' planes.
+inline constexpr double kAxisAlongFaceSine = 1e-11;
 /// Generator: the supporting edges of an edge-edge axis make a contact only if
 /// their closest points lie along n to within this fraction of their lengths.
 inline constexpr double kEdgesCross = 1e-9;
