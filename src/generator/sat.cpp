@@ -583,11 +583,10 @@ bool hint_overlap(const PosedHull& a, const PosedHull& b, const AxisHint& hint, 
         hint.feature_b >= tb->edge_count())
       return true;
     const TopologyEdge &x = ta->edge(hint.feature_a), &y = tb->edge(hint.feature_b);
-    const Vec3 edge_a = a.world_vertex(x.v1) - a.world_vertex(x.v0);
-    const Vec3 edge_b = b.world_vertex(y.v1) - b.world_vertex(y.v0);
+    const Vec3 edge_a = world_edge(a, x.v0, x.v1), edge_b = world_edge(b, y.v0, y.v1);
     axis = edge_a.cross(edge_b);
     const double length = axis.norm();
-    if (length <= tol::kParallelEdges * edge_a.norm() * edge_b.norm()) return true;
+    if (parallel_edges(edge_a, edge_b, length)) return true;
     axis /= length;
   }
   bool b_along_axis = true;

@@ -39,10 +39,10 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// beat the face axes by tol::kEdgeAxisBias (F3), edges between coplanar
 /// faces give no axis (F4), a face normal counts one way only (F7), only
 /// edge pairs whose Gauss arcs may cross are tried (edge_arcs.h, among the
-/// arcs of B that arc_bounds.h leaves in on large hulls, and not a pair
-/// whose axis lies along a face normal at an arc's end), and an axis is
-/// measured in full only when a cheap lower bound on its overlap leaves it
-/// a chance (sat.cpp).
+/// arcs of B that arc_bounds.h leaves in on large hulls, and on small ones
+/// not a pair whose axis lies along a face normal at an arc's end), and an
+/// axis is measured in full only when a cheap lower bound on its overlap
+/// leaves it a chance (sat.cpp).
 ///
 /// The axis that answered the same pair's last call on this thread is tried
 /// first (the pair is known by the addresses of its hulls' vertices): where
