@@ -23,10 +23,11 @@
 
 namespace mfz {
 
-class EdgePairBatch {
+/// A batch of at most `Capacity` pairs, on the stack or wherever it lives.
+template <int Capacity>
+class EdgePairBatchOf {
  public:
-  /// Pairs held at most: more than a row of the largest hull's arcs.
-  static constexpr int kCapacity = 512;
+  static constexpr int kCapacity = Capacity;
 
   int size() const { return count_; }
   bool has_room_for(int pairs) const { return count_ + pairs <= kCapacity; }
@@ -75,5 +76,12 @@ class EdgePairBatch {
   double min_a_[kCapacity], max_a_[kCapacity], min_b_[kCapacity], max_b_[kCapacity];
   double length_[kCapacity];
 };
+
+/// SAT's batch for small hulls: more than a row of the largest hull's arcs.
+using EdgePairBatch = EdgePairBatchOf<512>;
+
+/// The nine pairs of edge directions of two parallelepipeds
+/// (geometry/parallelepiped.h), a few hundred bytes on the call's stack.
+using ParallelepipedPairs = EdgePairBatchOf<9>;
 
 }  // namespace mfz
