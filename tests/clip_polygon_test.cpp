@@ -105,6 +105,27 @@ TEST(SutherlandHodgman, AnOutsideEndPastTheWiderBandIsStillInterpolated) {
   for (int k = 0; k < out.size(); ++k) EXPECT_LE(out[k].x(), 0.5);
 }
 
+// F48: the square's right edge lies 1e-9 rad off the plane x = 1, its upper
+// end 1e-9 outside (past both bands), its lower end on the plane within the
+// band of 1e-11, rounded one way or the other. Either way the lower end is
+// the edge's crossing: the square keeps its three corners inside and adds
+// nothing. Interpolating from the end 1e-12 inside put a crossing 1e-3 up
+// the edge, where the end 1e-12 outside gave none (a tetrahedron's edge in a
+// side plane, tilted 1e-12: one contact 2.5 from the other frame's).
+TEST(SutherlandHodgman, AnInsideEndWithinTheBandIsTheCrossingWhicheverSideItRoundsTo) {
+  const auto clipped = [](double lower_end) {
+    ClipPolygon square, out;
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1 + lower_end, 0, 0), Vec3(1 + 1e-9, 1, 0), Vec3(0, 1, 0)}) square.push(p);
+    clip_to_plane(square, Plane{Vec3(1, 0, 0), 1.0}, out, 1e-11, 1e-11);
+    return out;
+  };
+  for (const double lower_end : {-1e-12, 0.0, 1e-12}) {
+    const ClipPolygon out = clipped(lower_end);
+    ASSERT_EQ(out.size(), 4) << "lower end " << lower_end;
+    for (int k = 0; k < out.size(); ++k) EXPECT_TRUE(out[k].y() == 0 || out[k].y() == 1) << "lower end " << lower_end;
+  }
+}
+
 // A sliver of the incident face at the end of the side's edge: a point on
 // the plane at the edge's end, and two 1e-9 outside, one beside the end and
 // one whose foot lies 0.5 past it. Past the edge's end a foot is no point of

@@ -34,10 +34,16 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
     const double d_end = plane.signed_distance(end);
     const bool end_crossing = in.is_crossing(k);
     const bool start_inside = d_start <= on_plane, end_inside = d_end <= on_plane;
-    // An edge whose inside end is on the plane crosses it there: that end is
-    // kept anyway. Interpolating would divide rounding by rounding when the
-    // edge lies in the plane, and put the crossing anywhere along it (F23).
-    if (start_inside != end_inside && std::min(d_start, d_end) <= 0) {
+    // An edge whose inside end is on the plane (within `on_plane`, either
+    // side) crosses it there: that end is kept anyway. Interpolating would
+    // divide rounding by rounding when the edge lies in the plane, and put
+    // the crossing anywhere along it (F23). Within the band on the inside
+    // as well as the outside: an end 1.8e-12 inside a band of 1.7e-10, its
+    // edge 1e-8 out at the other end 13,000 along, was crossed 2.5 from it,
+    // where the same end at 0 in the case's frame was its own crossing
+    // (F48: a tetrahedron's edge in a side plane, tilted 1e-12; rigid-motion,
+    // manifuzz check --strict --seed 2026112845).
+    if (start_inside != end_inside) {
       // An outside end within `near_plane` crosses at its foot: interpolating
       // along an edge nearly in the plane moves the crossing by the end's
       // rounding over the edge's slope (F32: a corner 1.5e-12 out, its edge
@@ -51,15 +57,20 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
       // where it left the other, inside that side's band; its foot stood
       // 6e-8 higher than the edge's true crossing, above the reference
       // plane, and the contact there was dropped or kept as the sides' order
-      // went (vertex-order, 1e6 from the origin, --seed 2026112606).
+      // went (vertex-order, 1e6 from the origin, --seed 2026112606). The
+      // foot comes first whichever side of the plane the inside end rounds
+      // to: with both ends within rounding of the plane, the edge lies in
+      // it, and the outside end, inside in another frame, belongs to the
+      // polygon.
       const Vec3& outside = start_inside ? end : start;
       const double d_outside = start_inside ? d_end : d_start;
+      const double d_inside = start_inside ? d_start : d_end;
       const bool outside_is_corner = !(start_inside ? end_crossing : start_crossing);
       const Vec3 foot = outside - d_outside * plane.normal;
       if (outside_is_corner && d_outside <= near_plane && along_edge(foot, edge, near_plane)) {
         ok &= out.push(foot);
-      } else {
-        // The signs differ strictly (one <= 0, the other > 0), so the
+      } else if (d_inside < -on_plane) {
+        // The signs differ strictly (one < 0, the other > 0), so the
         // denominator is never zero and t lies in [0, 1].
         const double t = d_start / (d_start - d_end);
         ok &= out.push(start + t * (end - start), true);
