@@ -126,6 +126,21 @@ TEST(SutherlandHodgman, AnInsideEndWithinTheBandIsTheCrossingWhicheverSideItRoun
   }
 }
 
+// F48's other half: a corner 5e-11 outside, within the wider band, between
+// two ends 1e-12 outside, within the plane's band. Its edges lie in the
+// plane to rounding, and it crosses at its foot (1, 1), as it does when its
+// neighbours round to the plane's inner side; taking each neighbour as its
+// edge's crossing lost the corner, and the polygon its right side's middle.
+TEST(SutherlandHodgman, AnOutsideCornerWithinTheWiderBandKeepsItsFootBesideEndsOnThePlane) {
+  ClipPolygon pentagon, out;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1 + 1e-12, 0, 0), Vec3(1 + 5e-11, 1, 0), Vec3(1 + 1e-12, 2, 0), Vec3(0, 2, 0)})
+    pentagon.push(p);
+  clip_to_plane(pentagon, Plane{Vec3(1, 0, 0), 1.0}, out, 1e-11, 1e-10);
+  bool foot = false;
+  for (int k = 0; k < out.size(); ++k) foot |= out[k] == Vec3(1, 1, 0);
+  EXPECT_TRUE(foot);
+}
+
 // A sliver of the incident face at the end of the side's edge: a point on
 // the plane at the edge's end, and two 1e-9 outside, one beside the end and
 // one whose foot lies 0.5 past it. Past the edge's end a foot is no point of

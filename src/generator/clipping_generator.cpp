@@ -203,18 +203,16 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   int* corners = work.corners;
   patches.clear();
   // A point in a column that a point already added stands in adds nothing
-  // to the region's span, and is left out. Which of two points in one
-  // column came first followed the faces' numbering: the faces beside a
-  // corner poking 3.9e-4 through a face next to its corner, steep to it,
-  // clipped to points 2.2e-7 apart, inside one column of 2.6e-7 and 1.5e-5
-  // apart in depth, and the hulls renumbered kept the other one (O15,
-  // vertex-order, manifuzz check --strict --family boxes --seed
-  // 2026112847). Every face's points wait; the column test takes them
-  // deepest first (the lower coordinates first between equals, the same point
-  // once, where it first came), so that a
-  // column keeps its deepest point in any numbering, and those kept are
-  // then added in the faces' order, as before: a call whose points share
-  // no column answers as it did, to the bit.
+  // to the region's span, and is left out. Every face's points wait, and
+  // the column test takes them deepest first (lower coordinates first
+  // between equals, the same point once, where it first came), so that a
+  // column keeps its deepest point in any numbering; those kept are then
+  // added in the faces' order, as before, so a call whose points share no
+  // column answers as it did. Taken in the faces' order, two faces beside a
+  // corner poking 3.9e-4 through a face next to its corner clipped to
+  // points 2.2e-7 apart, in one column of 2.6e-7 but 1.5e-5 apart in depth,
+  // and the hulls renumbered kept the other one (F49, vertex-order,
+  // manifuzz check --strict --family boxes --seed 2026112847).
   auto& below_points = work.below_points;
   int* by_depth = work.below_order;
   bool* kept = work.below_kept;
