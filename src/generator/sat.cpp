@@ -280,7 +280,36 @@ struct HullSummary {
   double extent = 0;  ///< largest absolute world coordinate
 };
 
+// summary_of over the world columns: each coordinate summed in the
+// vertices' order, as the Vec3 sum adds them, and each squared distance
+// summed (x + y) + z, as squaredNorm does, so the same bits; the greatest
+// of each is exact in any order, so it runs in lanes. Through Vec3s a box's
+// two summaries were 4.6% of its call.
+HullSummary summary_of_columns(const PosedHull& hull) {
+  const int n = hull.vertex_count();
+  const double *xs = hull.world_xs(), *ys = hull.world_ys(), *zs = hull.world_zs();
+  double cx = 0, cy = 0, cz = 0;
+  for (int i = 0; i < n; ++i) cx += xs[i], cy += ys[i], cz += zs[i];
+  const double count = static_cast<double>(n);
+  cx /= count, cy /= count, cz /= count;
+  double reach2 = 0, extent = 0;
+#pragma omp simd reduction(max : reach2, extent)
+  for (int i = 0; i < n; ++i) {
+    const double dx = xs[i] - cx, dy = ys[i] - cy, dz = zs[i] - cz;
+    const double d2 = (dx * dx + dy * dy) + dz * dz;
+    reach2 = d2 > reach2 ? d2 : reach2;
+    const double largest = std::max(std::max(std::abs(xs[i]), std::abs(ys[i])), std::abs(zs[i]));
+    extent = largest > extent ? largest : extent;
+  }
+  HullSummary s;
+  s.centre = Vec3(cx, cy, cz);
+  s.reach = std::sqrt(reach2);
+  s.extent = extent;
+  return s;
+}
+
 HullSummary summary_of(const PosedHull& hull) {
+  if (hull.has_world_columns()) return summary_of_columns(hull);
   HullSummary s;
   for (int i = 0; i < hull.vertex_count(); ++i) s.centre += hull.world_vertex(i);
   s.centre /= static_cast<double>(hull.vertex_count());

@@ -109,6 +109,13 @@ class PosedHull {
     for (int f = 0; f < hull_.face_count; ++f) normals_[f] = turned_normal(f);
     normals_turned_ = true;
   }
+  /// Whether the world vertices are cached, as columns too (kCachedVertices).
+  bool has_world_columns() const { return cached_; }
+  /// The cached world vertices' x, y and z, each an array of vertex_count();
+  /// only when has_world_columns().
+  const double* world_xs() const { return xs_; }
+  const double* world_ys() const { return ys_; }
+  const double* world_zs() const { return zs_; }
   /// World position of the k-th vertex of face f's loop.
   Vec3 world_face_point(int f, int k) const { return world_vertex(face_vertex(f, k)); }
 
