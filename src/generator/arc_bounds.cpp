@@ -46,15 +46,18 @@ inline double lane_margin(const LaneArc& k, double vx, double vy, double vz, dou
 }
 
 // Built for AVX2 and for any x86-64; file-local, as vector_lanes.h asks.
+// Whole fours, the padding's lanes' margins thrown away (ArcColumns).
 MFZ_VECTOR_LANES void margins_in_lanes(const ArcColumns& c, int count, const Vec3& centre, double vertex_floor,
                                        const Vec3& shared, double shared_floor, double* margin) {
+  const int lanes = lanes_of(count);
+  if (lanes % kArcLanes != 0) __builtin_unreachable();
   const double ox = centre.x(), oy = centre.y(), oz = centre.z();
   const double sx = shared.x(), sy = shared.y(), sz = shared.z();
   const double *fx = c.face_x, *fy = c.face_y, *fz = c.face_z;
   const double *tx = c.twin_x, *ty = c.twin_y, *tz = c.twin_z;
   const double *vx = c.v0_x, *vy = c.v0_y, *vz = c.v0_z;
 #pragma omp simd
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < lanes; ++i) {
     LaneArc k;
     k.px = fx[i], k.py = fy[i], k.pz = fz[i];
     k.qx = tx[i], k.qy = ty[i], k.qz = tz[i];

@@ -18,7 +18,8 @@ inline constexpr double kArcBoundMargin = 1e-3;
 /// and m . shared > shared_floor for every unit vector m on arc i and on
 /// kArcBoundMargin past its ends (v0_i is the arc's first vertex, in world
 /// space); margin[i] <= 0 (or NaN) when not, or too near to tell. Writes
-/// margin[i] for i below arcs.size().
+/// margin[i] for i below lanes_of(arcs.size()): past arcs.size(), of the
+/// columns' padding, to be ignored.
 void arcs_above(const EdgeArcs& arcs, const Vec3& centre, double vertex_floor, const Vec3& shared,
                 double shared_floor, double* margin);
 

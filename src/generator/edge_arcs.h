@@ -31,8 +31,15 @@ struct EdgeArc {
   Vec3 across;     ///< n_twin x n_face: normal to the arc's great circle
 };
 
+/// Loops over arcs in vector lanes run whole fours of them.
+inline constexpr int kArcLanes = 4;
+/// `count` rounded up to whole fours: a loop in lanes runs to it.
+inline constexpr int lanes_of(int count) { return (count + kArcLanes - 1) / kArcLanes * kArcLanes; }
+
 /// The arcs' ends, circles and first vertices as columns (x, y, z apart),
-/// for loops over every arc at once in vector lanes.
+/// for loops over every arc at once in vector lanes. Past the last arc, up
+/// to the next whole four (lanes_of), every column holds zeros, so that
+/// such a loop needs no scalar tail; what those lanes give is thrown away.
 struct ArcColumns {
   double face_x[kMaxArcs], face_y[kMaxArcs], face_z[kMaxArcs];  ///< n_face
   double twin_x[kMaxArcs], twin_y[kMaxArcs], twin_z[kMaxArcs];  ///< n_twin
