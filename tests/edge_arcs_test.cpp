@@ -146,6 +146,53 @@ TEST(EdgeArcs, ColumnsAreTheArcsOfTheLastBuild) {
   expect_columns_of(arcs, posed_split);
 }
 
+// The lanes run whole fours of arcs (stop 46): past the last arc the
+// columns hold zeros up to the next four, whatever a larger build or keep
+// left there before, and a row names no arc past the last, though the
+// padding's zeros pass the lanes' test.
+TEST(EdgeArcs, ColumnsArePaddedWithZerosToAWholeFourAndRowsNameNoArcPastTheLast) {
+  const Hull large = *build_hull(test::sphere_points(32, 5u)).hull;
+  const Hull tetrahedron = *build_hull(test::tetrahedron_points()).hull;
+  const Hull other = *build_hull(test::sphere_points(8, 9u)).hull;
+  const mfz_hull view_large = large.view(), view_tetrahedron = tetrahedron.view(), view_other = other.view();
+  const Pose pose{Vec3(0.5, -1, 2), test::about(Vec3(1, 2, 3), 0.4)};
+  const PosedHull posed_large(view_large, pose), posed_tetrahedron(view_tetrahedron, pose);
+  const PosedHull posed_other(view_other, {Vec3(0, 0, 1), test::about(Vec3(0, 1, 1), 0.3)});
+  static EdgeArcs arcs;  // one object, as SAT's workspace keeps it
+  arcs.build(posed_large);
+  arcs.build(posed_tetrahedron);
+  ASSERT_EQ(arcs.size(), 6);
+  const ArcColumns& c = arcs.columns();
+  for (int i = arcs.size(); i < lanes_of(arcs.size()); ++i) {
+    for (const double* column : {c.face_x, c.face_y, c.face_z, c.twin_x, c.twin_y, c.twin_z, c.across_x, c.across_y,
+                                 c.across_z, c.v0_x, c.v0_y, c.v0_z})
+      EXPECT_EQ(column[i], 0.0) << "lane " << i;
+  }
+  const EdgeArcs rows(posed_other);
+  int row[kMaxArcs];
+  for (int i = 0; i < rows.size(); ++i) {
+    const int count = arcs.crossing(rows[i], row);
+    for (int k = 0; k < count; ++k) EXPECT_LT(row[k], arcs.size()) << "row " << i;
+  }
+  // The same of the columns keep_arcs writes, over a larger keep before.
+  bool left_out[kMaxArcs] = {};
+  static ArcColumns kept;
+  int index[kMaxArcs];
+  const EdgeArcs large_arcs(posed_large);
+  keep_arcs(large_arcs.columns(), large_arcs.size(), left_out, kept, index);
+  left_out[1] = true;
+  const int n = keep_arcs(arcs.columns(), arcs.size(), left_out, kept, index);
+  ASSERT_EQ(n, 5);
+  for (int i = n; i < lanes_of(n); ++i) EXPECT_EQ(kept.across_z[i], 0.0) << "kept lane " << i;
+  for (int i = 0; i < rows.size(); ++i) {
+    const int count = crossing_among(kept, n, index, rows[i], row);
+    for (int k = 0; k < count; ++k) {
+      EXPECT_LT(row[k], arcs.size()) << "row " << i;
+      EXPECT_NE(row[k], 1) << "an arc left out named in row " << i;
+    }
+  }
+}
+
 // The row filter in vector lanes must keep every pair the scalar test keeps,
 // the near-misses its slack lets through included: boxes face to face put
 // arc ends exactly on the other's great circles (products of 0), random
