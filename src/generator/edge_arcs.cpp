@@ -19,10 +19,6 @@ long long edge_key(int low, int high, int vertex_count) {
   return static_cast<long long>(low) * vertex_count + high;
 }
 
-}  // namespace
-
-namespace {
-
 // Zeros past the last arc, up to the next whole four (ArcColumns).
 void pad_to_lanes(ArcColumns& c, int count) {
   for (int i = count; i < lanes_of(count); ++i) {

@@ -56,14 +56,13 @@ class SupportMarks {
 template <class Visit>
 void faces_at_support(const PosedHull& hull, const Vec3& direction, const SupportMarks& marks, bool over_ties,
                       Visit&& visit) {
-  const mfz_hull& loops = hull.abi_hull();
   for (int f = 0; f < hull.face_count(); ++f) {
     int held = 0;
     bool contains_support = false;
-    const int32_t *loop = loops.face_vertices + loops.face_offsets[f], *end = loops.face_vertices + loops.face_offsets[f + 1];
-    for (; loop != end; ++loop) {
-      held += marks.at(*loop) ? 1 : 0;
-      contains_support |= *loop == marks.support();
+    for (int k = 0; k < hull.face_size(f); ++k) {
+      const int v = hull.face_vertex(f, k);
+      held += marks.at(v) ? 1 : 0;
+      contains_support |= v == marks.support();
     }
     if (held > 0 && (over_ties || contains_support)) visit(f, hull.world_face_normal(f).dot(direction), held);
   }
