@@ -522,6 +522,37 @@ TEST(ClippingGenerator, ATriangulatedPatchMetAgainFromAnotherTriangleIsClippedOn
   EXPECT_GT(contacts, 500);
 }
 
+// A square pyramid whose base, of area 1, lies 0.9 deep in a frustum whose
+// top, of area 1 too, ties with it for the axis: a face of each along z,
+// the same overlap, the same area. The frustum's sloping sides reach below
+// the base's plane inside its prism, and the pyramid's sides face away
+// from the frustum's top. Whichever hull comes first, the contacts are the
+// base's square over the top's, and the sloping sides' points (F50: with
+// the pyramid second, F27 reached only into it, and found none).
+TEST(ClippingGenerator, AFaceOfEachTiedWithEqualAreasGivesTheSameContactsWhicheverHullComesFirst) {
+  const std::vector<Vec3> pyramid = {{-0.5, -0.5, -0.5}, {0.5, -0.5, -0.5}, {0.5, 0.5, -0.5}, {-0.5, 0.5, -0.5},
+                                     {0, 0, 0.5}};
+  std::vector<Vec3> frustum;
+  for (const double x : {-0.5, 0.5})
+    for (const double y : {-0.5, 0.5}) frustum.push_back({x, y, 0.4}), frustum.push_back({3 * x, 3 * y, -1.6});
+  const Pose at_origin{Vec3::Zero(), Quat::Identity()}, beside{Vec3(0.3, 0.2, 0), Quat::Identity()};
+  const CaseRun first = run_builtin(make_case(pyramid, at_origin, frustum, beside));
+  const CaseRun second = run_builtin(make_case(frustum, beside, pyramid, at_origin));
+  ASSERT_NEAR(first.manifold.penetration, -0.9, kExact);
+  ASSERT_NEAR(second.manifold.penetration, -0.9, kExact);
+  EXPECT_VEC_NEAR(to_vec(first.manifold.normal), Vec3(0, 0, -1), kExact);
+  std::vector<Expected> swapped;
+  for (int i = 0; i < second.manifold.contact_count; ++i) {
+    const mfz_contact& c = second.manifold.contacts[i];
+    swapped.push_back({to_vec(c.point_on_b), to_vec(c.point_on_a), c.penetration});
+  }
+  expect_contacts(first.manifold, swapped);
+  // The squares' overlap, 0.7 by 0.8, and points of the sloping sides.
+  EXPECT_GT(first.manifold.contact_count, 4);
+  expect_all_invariants_hold(first);
+  expect_all_invariants_hold(second);
+}
+
 // A sliver face of A 2e14 long, parallel to a face of B, whose hull reaches
 // 2.8e17 from A: an edge of each spans the face's normal, and its overlap is
 // the face's to the rounding of the vertices, about 60 in any projection.

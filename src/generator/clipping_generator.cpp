@@ -145,6 +145,11 @@ class ClippedPatches {
 struct ClipWorkspace {
   ClipPolygon reference, incident, clipped;
   ClipPolygon below;  // F27's faces below the reference plane, in turn
+  // F50: a face of each tied with equal areas, the other way round: the
+  // incident face as the reference face, its prism's sides, and the points
+  // of the reference hull's faces below its plane.
+  ClipPolygon other_reference, other_way;
+  PrismSides other_sides;
   ClipPolygon scratch;  // the clip's other buffer (ClipFace::scratch)
   ClippedPatches patches;
   int corners[kMaxPatchLoop];
@@ -164,13 +169,26 @@ struct ClipWorkspace {
   return work;
 }
 
+double loop_perimeter(const ClipPolygon& loop) {
+  double perimeter = 0;
+  for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  return perimeter;
+}
+
+// The loop's area, its corners taken from the first so that a loop far
+// from the frame's centre keeps its digits.
+double loop_area(const ClipPolygon& loop, const Vec3& normal) {
+  Vec3 twice = Vec3::Zero();
+  for (int k = 1; k + 1 < loop.size(); ++k) twice += (loop[k] - loop[0]).cross(loop[k + 1] - loop[0]);
+  return 0.5 * std::abs(twice.dot(normal));
+}
+
 // F27: the other faces of the incident hull that face the reference face and
 // reach below its plane, each clipped as the incident face is; their points
 // are added to `clipped` (each once). True when one was added.
 bool add_faces_below_reference(const PosedHull& incident, const int* done, int done_count,
                                const ClipFace& reference, const Plane& reference_plane, const ClippingSteps& steps,
-                               double world_resolution, ClipWorkspace& work) {
-  ClipPolygon& clipped = work.clipped;
+                               double world_resolution, ClipWorkspace& work, ClipPolygon& clipped) {
   bool added = false;
   // F33: the world's rounding alone made the column a frame's choice. A face
   // 1.1e-6 rad off perpendicular stood 2.3e-10 beside a kept point, 2.1e-4
@@ -191,10 +209,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   // it is under a third of what a relation or the region's span can tell
   // (1e-6 L), and it is 80 times the rounding that far out.
   constexpr double kColumnOverPerimeter = 1e-7;
-  const ClipPolygon& loop = *reference.polygon;
-  double perimeter = 0;
-  for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
-  const double column = kColumnOverPerimeter * perimeter;
+  const double column = kColumnOverPerimeter * loop_perimeter(*reference.polygon);
   // The shortcut stands for the built-in's own steps only: a mutant's
   // patch or clip is run as it is.
   const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
@@ -267,6 +282,47 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   }
   add_deepest_first();
   return added;
+}
+
+// F50: a face of each hull along the axis, antiparallel and so with the
+// same overlap, whose patches have the same area to rounding: F14 leaves
+// the reference face to the order of the hulls, and F27 reaches only into
+// the incident hull, below the reference plane. A pyramid deep in a hull,
+// its base tied with the hull's face of the same area, took five points of
+// the hull's sloping faces one way round and none the other, the pyramid's
+// sides facing away (swap-symmetry, 0.107 L, --strict --family
+// near-coplanar,coplanar-grid,duplicates,slab,needle --seed 2026112868,
+// F50, open as O16). Such a tie is clipped the other way round too: the
+// incident face stands as a reference face, and the reference hull's faces
+// that reach below its plane add their points, held against the incident
+// faces' points alone, as F27's are, so that either order gives the same
+// contacts. The area is of the faces' patches (a triangulated face weighs
+// as the face), so the tie is decided alike where a triangle of it is the
+// face. Returns how many points it gives, in work.other_way; `incident`
+// is then a reference face, with its polygon and its prism's sides.
+int add_faces_below_incident_face(const ClipFace& reference, ClipFace& incident, const ClipPolygon& incident_points,
+                                  const ClippingSteps& steps, double world_resolution, ClipWorkspace& work) {
+  if (!coplanar_normals(reference.normal, -incident.normal)) return 0;
+  ClipPolygon& loop = work.other_reference;
+  steps.face_polygon(*incident.hull, incident.index, loop);
+  const ClipPolygon& reference_loop = *reference.polygon;
+  const double area = loop_area(loop, incident.normal), reference_area = loop_area(reference_loop, reference.normal);
+  const double largest = std::max({largest_coordinate(loop), largest_coordinate(reference_loop), world_resolution});
+  const double rounding = tol::world_rounding(largest) * (loop_perimeter(loop) + loop_perimeter(reference_loop));
+  if (!(std::abs(area - reference_area) <= tol::kTie * std::max(area, reference_area) + rounding)) return 0;
+  incident.polygon = &loop;
+  incident.world_resolution = world_resolution;
+  incident.scratch = &work.scratch;
+  keep_prism_sides(incident, work.other_sides);
+  incident.sides = &work.other_sides;
+  const Plane incident_plane{incident.normal, incident.normal.dot(incident.hull->world_face_point(incident.index, 0))};
+  ClipPolygon& points = work.other_way;
+  points.take(incident_points);
+  const int held = points.size();
+  add_faces_below_reference(*reference.hull, &reference.index, 1, incident, incident_plane, steps,
+                            std::max(work.other_sides.largest, world_resolution), work, points);
+  for (int k = 0; k < held; ++k) points.erase(0);
+  return points.size();
 }
 
 }  // namespace
@@ -518,9 +574,12 @@ ClippingSteps::ClippingSteps()
 //     (Sutherland-Hodgman) against the sides of the prism over the reference
 //     face (F1), with a band for edges lying in a side (F23). Then the points
 //     above the reference plane are removed, and tied faces' shared points
-//     are kept once (F19).
+//     are kept once (F19). The incident hull's other faces that reach below
+//     the reference plane are clipped the same way (F27); where the two
+//     faces are a face of each with equal areas, the reference hull's faces
+//     below the incident face's plane too (F50).
 //  6. Each remaining point is a contact with its own penetration, measured
-//     from the reference polygon along n.
+//     from the reference polygon along n (F50's from the incident face's).
 //  7. Nothing left at a positive depth: the crossing supporting edges (F16),
 //     then the deepest vertex inside the reference hull paired with where a
 //     ray along n leaves it (F17, F18), then the edge axis the face axis
@@ -669,17 +728,25 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // them: keeping only the corners of their hull would leave a point on an
   // edge of it to rounding (swap-symmetry, --strict --seed 20261121).
   const int from_incident_faces = clipped.size();
+  ClipFace other_way_round = incident;
+  int other_way = add_faces_below_incident_face(reference, other_way_round, clipped, steps, world_resolution, work);
+  if (other_way > 0 && trace)
+    record(trace, "a face of each tied: the reference hull's faces reaching below the incident face's plane",
+           work.other_way);
   if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps,
-                                std::max(resolution, world_resolution), work)) {
-    if (trace) record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
-    // More than the ABI holds: the incident faces' own points, as before
-    // F27, rather than a reduction of points in no loop order (a 59-point
-    // hull's 67 points reduced to none: has-contacts, the second campaign).
-    if (clipped.size() > MFZ_MAX_CONTACTS)
-      while (clipped.size() > from_incident_faces) clipped.erase(clipped.size() - 1);
+                                std::max(resolution, world_resolution), work, clipped) &&
+      trace)
+    record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
+  // More than the ABI holds: the incident faces' own points, as before
+  // F27, rather than a reduction of points in no loop order (a 59-point
+  // hull's 67 points reduced to none: has-contacts, the second campaign).
+  if (clipped.size() + other_way > MFZ_MAX_CONTACTS && clipped.size() + other_way > from_incident_faces) {
+    while (clipped.size() > from_incident_faces) clipped.erase(clipped.size() - 1);
+    other_way = 0;
   }
   reduce_polygon(clipped, MFZ_MAX_CONTACTS);
   steps.emit_contacts(reference, clipped, n, flipped, out);
+  if (other_way > 0) steps.emit_contacts(other_way_round, work.other_way, n, !flipped, out);
   // F16: where a face axis ties with an edge axis, the edges can cross just
   // beyond the reference face (a fold of 1e-9 rad in the other hull), and the
   // prism clips everything away. The supporting edges then give the contact.
