@@ -460,6 +460,49 @@ TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContacts
   EXPECT_GT(contacts, 200);
 }
 
+// The faces beside a box's incident face lean toward the reference face and
+// reach below its plane by the incident face's edge alone: their corners
+// below it are held already, to the bit, and F27 passes over them without
+// clipping. Through a face_polygon step that is not the built-in's own,
+// every such face is clipped, and each answer must be the same bytes: boxes
+// resting face to face, tilted up to 8 degrees, some astride the lower
+// box's edge, a 32-gon prism standing on a box, and 8-point hulls pressed
+// into it, whose faces beside the incident face reach below the plane by
+// corners of their own or cross the prism's sides.
+TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheContactsOfClippingThem) {
+  ClippingSteps every_face;
+  every_face.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  const ClippingSteps builtin;
+  std::vector<Vec3> prism;
+  for (int k = 0; k < 32; ++k) {
+    const double angle = 2 * M_PI * k / 32;
+    for (const double z : {-0.3, 0.3}) prism.push_back(Vec3(0.25 * std::cos(angle), 0.25 * std::sin(angle), z));
+  }
+  const Hull below = *build_hull(test::box_points(1, 0.8, 0.5)).hull;
+  const mfz_hull va = below.view();
+  const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
+  int contacts = 0;
+  for (const Hull& above : {*build_hull(test::box_points(0.4, 0.3, 0.35)).hull, *build_hull(prism).hull,
+                            *build_hull(test::sphere_points(8, 11)).hull, *build_hull(test::sphere_points(8, 23)).hull}) {
+    const mfz_hull vb = above.view();
+    for (int k = 0; k < 48; ++k) {
+      const double tilt = (k % 8) * M_PI / 180;
+      const Quat turn = test::about(Vec3::UnitZ(), 0.61 * k) * test::about(Vec3(std::cos(k), std::sin(k), 0), tilt);
+      // Half of them astride the lower box's edge at x = 1.
+      const Vec3 at(k % 2 ? 0.9 : 0.5 * std::sin(1.3 * k), 0.3 * std::cos(0.7 * k), 0.5 + 0.3 + 0.02 * std::sin(k));
+      const mfz_pose pb = Pose{at, turn}.to_abi();
+      mfz_manifold passed_over{}, clipped{};
+      ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, passed_over, nullptr, builtin), 0);
+      ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, clipped, nullptr, every_face), 0);
+      ASSERT_EQ(passed_over.contact_count, clipped.contact_count) << "pose " << k;
+      EXPECT_EQ(std::memcmp(passed_over.contacts, clipped.contacts, sizeof(mfz_contact) * clipped.contact_count), 0)
+          << "pose " << k;
+      contacts += clipped.contact_count;
+    }
+  }
+  EXPECT_GT(contacts, 200);
+}
+
 // Every face of `h` as a fan of triangles, each normal turned by up to
 // `wobble` rad about an axis of its own: coplanar patches whose triangles'
 // normals are within tol::kCoplanarSine of some and not of others, so that
