@@ -428,6 +428,25 @@ TEST(ClippingGenerator, SidesThatClipNothingArePassedOverWithThePolygonEverySide
   EXPECT_GT(clipped, 10);
 }
 
+// A face_polygon step that is not the built-in's own: F27's shortcuts
+// stand for the built-in's steps only, so through it every face is clipped.
+ClippingSteps every_face_clipped() {
+  ClippingSteps steps;
+  steps.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  return steps;
+}
+
+// The corners of an n-gon prism about z.
+std::vector<Vec3> prism_points(int sides, double radius, double half_height) {
+  std::vector<Vec3> corners;
+  for (int k = 0; k < sides; ++k) {
+    const double angle = 2 * M_PI * k / sides;
+    for (const double z : {-half_height, half_height})
+      corners.push_back(Vec3(radius * std::cos(angle), radius * std::sin(angle), z));
+  }
+  return corners;
+}
+
 // The other faces below the reference plane (F27) that lie wholly beside
 // one side of the prism are passed over before their patch is gathered.
 // Through a face_polygon step that is not the built-in's own, the shortcut
@@ -436,8 +455,7 @@ TEST(ClippingGenerator, SidesThatClipNothingArePassedOverWithThePolygonEverySide
 // half of the incident hull reaches below a small reference face, and
 // boxes, whose sides stand beside it.
 TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContactsOfClippingThem) {
-  ClippingSteps every_face;
-  every_face.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  const ClippingSteps every_face = every_face_clipped();
   const ClippingSteps builtin;
   int contacts = 0;
   for (const int points : {32, 128}) {
@@ -470,14 +488,9 @@ TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContacts
 // into it, whose faces beside the incident face reach below the plane by
 // corners of their own or cross the prism's sides.
 TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheContactsOfClippingThem) {
-  ClippingSteps every_face;
-  every_face.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  const ClippingSteps every_face = every_face_clipped();
   const ClippingSteps builtin;
-  std::vector<Vec3> prism;
-  for (int k = 0; k < 32; ++k) {
-    const double angle = 2 * M_PI * k / 32;
-    for (const double z : {-0.3, 0.3}) prism.push_back(Vec3(0.25 * std::cos(angle), 0.25 * std::sin(angle), z));
-  }
+  const std::vector<Vec3> prism = prism_points(32, 0.25, 0.3);
   const Hull below = *build_hull(test::box_points(1, 0.8, 0.5)).hull;
   const mfz_hull va = below.view();
   const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
@@ -530,14 +543,9 @@ Hull fan_triangulated(const Hull& h, double wobble) {
 // of the coplanar sine (patches that differ from triangle to triangle) and
 // by twice it (patches of one or two triangles).
 TEST(ClippingGenerator, ATriangulatedPatchMetAgainFromAnotherTriangleIsClippedOnceWithTheSameContacts) {
-  ClippingSteps every_face;
-  every_face.face_polygon = [](const PosedHull& hull, int face, ClipPolygon& out) { coplanar_patch(hull, face, out); };
+  const ClippingSteps every_face = every_face_clipped();
   const ClippingSteps builtin;
-  std::vector<Vec3> prism;
-  for (int k = 0; k < 32; ++k) {
-    const double angle = 2 * M_PI * k / 32;
-    for (const double z : {-0.05, 0.05}) prism.push_back(Vec3(0.1 * std::cos(angle), 0.1 * std::sin(angle), z));
-  }
+  const std::vector<Vec3> prism = prism_points(32, 0.1, 0.05);
   const Hull slab = *build_hull(test::box_points(10, 10, 1)).hull;
   const mfz_hull va = slab.view();
   const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
