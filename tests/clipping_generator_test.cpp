@@ -484,9 +484,13 @@ TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContacts
 // clipping. Through a face_polygon step that is not the built-in's own,
 // every such face is clipped, and each answer must be the same bytes: boxes
 // resting face to face, tilted up to 8 degrees, some astride the lower
-// box's edge, a 32-gon prism standing on a box, and 8-point hulls pressed
+// box's edge, the same box with its faces split in triangles (coplanar
+// patches, which are clipped whole), a 32-gon prism standing on a box, and
+// 8-point hulls pressed
 // into it, whose faces beside the incident face reach below the plane by
 // corners of their own or cross the prism's sides.
+Hull fan_triangulated(const Hull& h, double wobble);
+
 TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheContactsOfClippingThem) {
   const ClippingSteps every_face = every_face_clipped();
   const ClippingSteps builtin;
@@ -495,7 +499,8 @@ TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheCon
   const mfz_hull va = below.view();
   const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
   int contacts = 0;
-  for (const Hull& above : {*build_hull(test::box_points(0.4, 0.3, 0.35)).hull, *build_hull(prism).hull,
+  const Hull box = *build_hull(test::box_points(0.4, 0.3, 0.35)).hull;
+  for (const Hull& above : {box, fan_triangulated(box, 0.0), *build_hull(prism).hull,
                             *build_hull(test::sphere_points(8, 11)).hull, *build_hull(test::sphere_points(8, 23)).hull}) {
     const mfz_hull vb = above.view();
     for (int k = 0; k < 48; ++k) {
