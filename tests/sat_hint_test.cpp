@@ -211,5 +211,44 @@ TEST(SatHint, AFaceThatSeparatesReversedAtTouchingIsMeasuredWhateverTheHint) {
     EXPECT_TRUE(run_sat_with_hint(a, b, {AxisKind::face_b, -1, f}).separated) << "hint: face " << f << " of B";
 }
 
+// F51: a 29-point hull with five edges along one direction against a
+// 7-point hull with two: ten edge pairs give one axis, each to its own
+// rounding, and one pair supports the hulls. The first call kept a pair
+// that does not (A's edge 60 with B's 11); with it as the hint, the bounds
+// left A's row 60 out and kept 18 with 11, 1.2e-16 deeper. Whichever pair
+// along the axis is the hint, the answer is the one without a hint, to the
+// bit, named by the supporting pair. In the generator's frame, centred on
+// A's position, where the fuzzer met it.
+TEST(SatHint, EdgePairsAlongOneAxisAnswerWithTheSameBitsWhicheverIsTheHint) {
+  const CaseParse parsed = read_case_file(test::corpus_path(
+      "regressions/f51-edge-pairs-along-one-axis-named-by-the-bounds-so-a-hint-picked-another-1e-16-deeper.case"));
+  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
+  const test::PosedCase posed(*parsed.value);
+  ASSERT_TRUE(posed.built);
+  const Pose frame_a{Vec3::Zero(), posed.pose_a.orientation};
+  const Pose frame_b{posed.pose_b.position - posed.pose_a.position, posed.pose_b.orientation};
+  const PosedHull a(posed.view_a, frame_a), b(posed.view_b, frame_b);
+  const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
+  ASSERT_FALSE(cold.separated);
+  ASSERT_EQ(cold.kind, AxisKind::edge_edge);
+  const HullTopology &ta = *a.topology(), &tb = *b.topology();
+  int along = 0;
+  for (int ea = 0; ea < ta.edge_count(); ++ea)
+    for (int eb = 0; eb < tb.edge_count(); ++eb) {
+      const Vec3 edge_a = a.world_vertex(ta.edge(ea).v1) - a.world_vertex(ta.edge(ea).v0);
+      const Vec3 edge_b = b.world_vertex(tb.edge(eb).v1) - b.world_vertex(tb.edge(eb).v0);
+      const Vec3 axis = edge_a.cross(edge_b);
+      if (!(axis.norm() > 1e-6 * edge_a.norm() * edge_b.norm()) || axis.normalized().cross(cold.normal).norm() > 1e-9)
+        continue;
+      ++along;
+      const SatResult warm = run_sat_with_hint(a, b, {AxisKind::edge_edge, ea, eb});
+      EXPECT_EQ(warm.feature_a, cold.feature_a) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.feature_b, cold.feature_b) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.depth, cold.depth) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.normal, cold.normal) << "hint: A's edge " << ea << " with B's " << eb;
+    }
+  EXPECT_EQ(along, 10) << "five edges of A and two of B along the axis";
+}
+
 }  // namespace
 }  // namespace mfz

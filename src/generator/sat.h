@@ -5,6 +5,7 @@
 /// A with every edge of B; the axis of least overlap gives the collision
 /// normal and the penetration.
 #include "geometry/axis_kind.h"
+#include "generator/supporting_edges.h"
 #include "geometry/posed_hull.h"
 
 namespace mfz {
@@ -19,6 +20,10 @@ struct SatResult {
   AxisKind kind = AxisKind::face_a;
   int feature_a = -1;  ///< face of A, or edge of A (index into its unique edges in loop order)
   int feature_b = -1;  ///< face of B, or edge of B
+  /// On an edge axis, the supporting edges SAT named it by (F51), in the
+  /// thread's SAT workspace: valid until the thread's next SAT call, and
+  /// only while they hold the hulls and the normal (AxisSupport::holds).
+  const AxisSupport* support = nullptr;
 };
 
 /// The features whose axis answered a pair's last call: SAT measures it
@@ -42,7 +47,8 @@ double overlap_along(const PosedHull& a, const PosedHull& b, const Vec3& axis, b
 /// arcs of B that arc_bounds.h leaves in on large hulls, and on small ones
 /// not a pair whose axis lies along a face normal at an arc's end), and an
 /// axis is measured in full only when a cheap lower bound on its overlap
-/// leaves it a chance (sat.cpp).
+/// leaves it a chance (sat.cpp). An edge axis is answered by the first
+/// pair of supporting edges that spans it, where one does (F51).
 ///
 /// The axis that answered the same pair's last call on this thread is tried
 /// first (the pair is known by the addresses of its hulls' vertices): where
