@@ -141,6 +141,24 @@ TEST(SutherlandHodgman, AnOutsideCornerWithinTheWiderBandKeepsItsFootBesideEndsO
   EXPECT_TRUE(foot);
 }
 
+// F52: a corner within the wider band inside the plane, its edge to a
+// corner outside both bands lying 1e-9 rad off the plane. The wider band is
+// the world's rounding that a corner carries; so far in, the corner is the
+// edge's crossing, as its foot is when it rounds outside; the top edge
+// still crosses, near (1, 1). Interpolating put
+// a crossing 5e-2 along the edge from a corner 5e-11 inside (far out, a
+// face beside the deepest corner: a contact 8658 from it in one frame).
+TEST(SutherlandHodgman, AnInsideCornerWithinTheWiderBandIsItsEdgesCrossing) {
+  for (const double corner : {-5e-11, -1e-12, 0.0, 1e-12, 5e-11}) {
+    ClipPolygon square, out;
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1 + corner, 0, 0), Vec3(1 + 1e-9, 1, 0), Vec3(0, 1, 0)}) square.push(p);
+    clip_to_plane(square, Plane{Vec3(1, 0, 0), 1.0}, out, 1e-11, 1e-10);
+    ASSERT_EQ(out.size(), 4) << "corner " << corner;
+    for (int k = 0; k < out.size(); ++k)
+      EXPECT_TRUE(out[k].y() == 0 || out[k].y() > 0.999) << "corner " << corner << ": a crossing at y " << out[k].y();
+  }
+}
+
 // A sliver of the incident face at the end of the side's edge: a point on
 // the plane at the edge's end, and two 1e-9 outside, one beside the end and
 // one whose foot lies 0.5 past it. Past the edge's end a foot is no point of

@@ -70,7 +70,8 @@ struct SideEdge {
 /// crossing point (0: only a point exactly on the plane). An outside corner
 /// (no crossing) within `near_plane` of it (a larger band, at least
 /// `on_plane`) crosses at its foot on the plane, where that foot lies on
-/// `edge` (when given) to within `near_plane`. Returns false if `out` overflowed (cannot happen
+/// `edge` (when given) to within `near_plane`; an inside corner within
+/// `near_plane` of it is its edge's crossing. Returns false if `out` overflowed (cannot happen
 /// when in.size() < capacity).
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
                    double near_plane = 0, const SideEdge* edge = nullptr);
