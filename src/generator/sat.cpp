@@ -459,8 +459,8 @@ void name_by_supporting_edges(const PosedHull& a, const PosedHull& b, SatResult&
     if (named) return;
     support.b->each([&](int eb, int b0, int b1) {
       if (named) return;
-      // SAT's own pair, measured on these bits already: most often the one
-      // supporting pair.
+      // SAT's own pair, after others that do not span the axis: measured
+      // on these bits already.
       if (ea == best.feature_a && eb == best.feature_b) {
         named = true;
         return;

@@ -4,8 +4,8 @@
 /// normal of A, every face normal of B, and the cross product of every edge of
 /// A with every edge of B; the axis of least overlap gives the collision
 /// normal and the penetration.
-#include "geometry/axis_kind.h"
 #include "generator/supporting_edges.h"
+#include "geometry/axis_kind.h"
 #include "geometry/posed_hull.h"
 
 namespace mfz {

@@ -21,24 +21,17 @@ SupportingEdges::SupportingEdges(const PosedHull& hull, const Vec3& direction) :
   // that the face untriangulated does not have.
   each_edge([&](int, int, int, double reach, const auto& is_flat) {
     if (reach > best && !is_flat()) best = reach;
+    return true;
   });
   threshold_ = best - (tol::kTie * std::max(best - lowest, hull.span()) +
                        tol::world_rounding(std::max(std::abs(best), extent)));
 }
 
 int SupportingEdges::first() const {
-  if (const HullTopology* topology = hull_.topology()) {
-    for (int e = 0; e < topology->edge_count(); ++e) {
-      const TopologyEdge& edge = topology->edge(e);
-      if (std::min(height(edge.v0), height(edge.v1)) >= threshold_ &&
-          !coplanar_normals(hull_.world_face_normal(edge.twin), hull_.world_face_normal(edge.face)))
-        return e;
-    }
-    return -1;
-  }
   int found = -1;
-  each([&](int edge, int, int) {
-    if (found < 0) found = edge;
+  each_edge([&](int edge, int, int, double reach, const auto& is_flat) {
+    if (reach >= threshold_ && !is_flat()) found = edge;
+    return found < 0;
   });
   return found;
 }

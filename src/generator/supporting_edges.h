@@ -37,8 +37,8 @@ class SupportingEdges {
  public:
   SupportingEdges(const PosedHull& hull, const Vec3& direction);
 
-  /// The first supporting edge in the hull's order (-1 for none): on a
-  /// hull with a topology it stops there, where `each` visits every edge.
+  /// The first supporting edge in the hull's order (-1 for none), found
+  /// without visiting the edges after it.
   int first() const;
 
   /// Calls `visit(edge, v0, v1)` for each supporting edge, in the hull's
@@ -47,13 +47,15 @@ class SupportingEdges {
   void each(Visit&& visit) const {
     each_edge([&](int edge, int v0, int v1, double reach, const auto& is_flat) {
       if (reach >= threshold_ && !is_flat()) visit(edge, v0, v1);
+      return true;
     });
   }
 
  private:
   // Each edge once (from its lower-numbered end), with its number, the
   // reach of its nearer end along the direction and a test, asked only of
-  // an edge about to count, of whether it lies between two coplanar faces.
+  // an edge about to count, of whether it lies between two coplanar faces;
+  // `visit` returns false to stop there.
   // A hull with a topology reads its edges, with the faces either side,
   // from it: the same edges in the same order, and the same test on the
   // same two normals, as the loops' steps give (a 128-point hull has 378
@@ -63,9 +65,10 @@ class SupportingEdges {
     if (const HullTopology* topology = hull_.topology()) {
       for (int e = 0; e < topology->edge_count(); ++e) {
         const TopologyEdge& edge = topology->edge(e);
-        visit(e, edge.v0, edge.v1, std::min(height(edge.v0), height(edge.v1)), [&] {
-          return coplanar_normals(hull_.world_face_normal(edge.twin), hull_.world_face_normal(edge.face));
-        });
+        if (!visit(e, edge.v0, edge.v1, std::min(height(edge.v0), height(edge.v1)), [&] {
+              return coplanar_normals(hull_.world_face_normal(edge.twin), hull_.world_face_normal(edge.face));
+            }))
+          return;
       }
       return;
     }
@@ -74,7 +77,9 @@ class SupportingEdges {
       const int n = hull_.face_size(f);
       for (int k = 0; k < n; ++k) {
         const int v0 = hull_.face_vertex(f, k), v1 = hull_.face_vertex(f, (k + 1) % n);
-        if (v0 < v1) visit(e++, v0, v1, std::min(height(v0), height(v1)), [&] { return hull_.is_flat_step(f, k); });
+        if (v0 < v1 &&
+            !visit(e++, v0, v1, std::min(height(v0), height(v1)), [&] { return hull_.is_flat_step(f, k); }))
+          return;
       }
     }
   }
