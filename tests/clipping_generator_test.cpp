@@ -305,6 +305,47 @@ TEST(ClippingGenerator, TheReferencePrismsKeptSidesClipAsTheSidesComputedOnEachC
   }
 }
 
+// The incident polygon clipped against the prism over `loop` (its normal
+// and the world's magnitude given), the sides computed on the clip (first)
+// and kept beforehand (second): both must clip alike.
+std::pair<ClipPolygon, ClipPolygon> clipped_by_computed_and_kept_sides(const ClipPolygon& loop, const Vec3& normal,
+                                                                       double world_resolution,
+                                                                       const ClipPolygon& incident) {
+  ClipFace reference;
+  reference.normal = normal;
+  reference.polygon = &loop;
+  reference.world_resolution = world_resolution;
+  PrismSides sides;
+  keep_prism_sides(reference, sides);
+  ClipPolygon computed = incident, kept = incident;
+  EXPECT_TRUE(clip_to_reference_prism(reference, computed, nullptr));
+  reference.sides = &sides;
+  EXPECT_TRUE(clip_to_reference_prism(reference, kept, nullptr));
+  return {computed, kept};
+}
+
+// An incident edge 6000 long in the side plane x = 1e4 of a square
+// reference face, tilted 2.3e-13 from it: its ends stand 7e-10 either side,
+// five times the frame's rounding at the origin and far inside it 1e8 out.
+// The edge lies in the plane in both frames and is kept whole; interpolated
+// at the origin, it was cut at its middle, and a contact there stood in one
+// frame only (F53, far-from-origin, open as O19).
+TEST(ClippingGenerator, AnIncidentEdgeInASidePlaneTiltedBelowCoplanarityIsKeptWholeInEveryFrame) {
+  for (const double out : {0.0, 1e8}) {
+    const Vec3 at(out, 0, 0);
+    ClipPolygon loop, incident;
+    for (const Vec3& v : {Vec3(0, 0, 0), Vec3(1e4, 0, 0), Vec3(1e4, 1e4, 0), Vec3(0, 1e4, 0)}) loop.push(v + at);
+    for (const Vec3& p : {Vec3(1e4 - 7e-10, 2e3, -1), Vec3(1e4 + 7e-10, 8e3, -1), Vec3(5e3, 5e3, -1)})
+      incident.push(p + at);
+    const auto [computed, kept] = clipped_by_computed_and_kept_sides(loop, Vec3(0, 0, 1), loop[2].norm(), incident);
+    for (const auto& [clipped, which] : {std::pair{&computed, "computed"}, std::pair{&kept, "kept"}}) {
+      ASSERT_EQ(clipped->size(), 3) << which << " sides, " << out << " out";
+      for (int k = 0; k < clipped->size(); ++k)
+        EXPECT_LE(((*clipped)[k] - incident[k]).norm(), 1e-6) << which << " sides, " << out << " out, point " << k;
+    }
+  }
+}
+
 // A needle face 28 long, its base 3.4e-13 wide (a tip of sine 1.2e-14),
 // 5e5 from the origin, and a triangle across its tip. The two long sides'
 // crossing, rounded, lay 4.97e-4 past the tip, and the clip kept a point
@@ -320,20 +361,12 @@ TEST(ClippingGenerator, ATriangleAcrossTheTipOfANeedleFaceFarOutIsClippedAtTheTi
                         Vec3(290223.03843785997, -386964.05241714668, 145111.51896893),
                         Vec3(290223.03893785999, -386964.05241714668, 145111.51946893)})
     incident.push(p);
-  ClipFace reference;
-  reference.normal = Vec3(0, 1, 0);
-  reference.polygon = &loop;
-  reference.world_resolution = at.norm();
-  PrismSides sides;
-  keep_prism_sides(reference, sides);
-  for (const bool kept : {false, true}) {
-    reference.sides = kept ? &sides : nullptr;
-    ClipPolygon clipped = incident;
-    ASSERT_TRUE(clip_to_reference_prism(reference, clipped, nullptr));
-    ASSERT_FALSE(clipped.empty());
+  const auto [computed, kept] = clipped_by_computed_and_kept_sides(loop, Vec3(0, 1, 0), at.norm(), incident);
+  for (const auto& [clipped, which] : {std::pair{&computed, "computed"}, std::pair{&kept, "kept"}}) {
+    ASSERT_FALSE(clipped->empty());
     // The needle runs up +z from its tip, loop[0].
-    for (int k = 0; k < clipped.size(); ++k)
-      EXPECT_LE(loop[0].z() - clipped[k].z(), 1e-9) << (kept ? "kept" : "computed") << " sides, point " << k;
+    for (int k = 0; k < clipped->size(); ++k)
+      EXPECT_LE(loop[0].z() - (*clipped)[k].z(), 1e-9) << which << " sides, point " << k;
   }
 }
 

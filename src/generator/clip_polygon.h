@@ -71,10 +71,12 @@ struct SideEdge {
 /// (no crossing) within `near_plane` of it (a larger band, at least
 /// `on_plane`) crosses at its foot on the plane, where that foot lies on
 /// `edge` (when given) to within `near_plane`; an inside corner within
-/// `near_plane` of it is its edge's crossing. Returns false if `out` overflowed (cannot happen
-/// when in.size() < capacity).
+/// `near_plane` of it is its edge's crossing. The ends of an edge that lies
+/// in the plane to `in_plane_sine` (both ends within that sine times its
+/// length) are inside too, and the edge is kept whole. Returns false if `out`
+/// overflowed (cannot happen when in.size() < capacity).
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
-                   double near_plane = 0, const SideEdge* edge = nullptr);
+                   double near_plane = 0, const SideEdge* edge = nullptr, double in_plane_sine = 0);
 
 /// The tutorial's last step: drops the points outside `plane` without adding
 /// crossing points (it wants contact points, not the clipped polygon).

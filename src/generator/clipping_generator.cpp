@@ -77,8 +77,12 @@ bool lone_face_clips_to_nothing(const PosedHull& incident, int f, const ClipFace
   if (!sides || sides->count == 0) return false;
   const int n = incident.face_size(f);
   // The hull's reach bounds its loop's largest coordinate: a band at least
-  // the clip's, so that a face outside it is outside the clip's.
-  const double on_plane = tol::world_rounding(std::max(sides->largest, incident.reach_from_origin()));
+  // the clip's, so that a face outside it is outside the clip's. Twice the
+  // reach bounds every edge a clip of the face can make, so that no edge of
+  // its points, all further out than this, lies in the plane (F53).
+  const double reach = incident.reach_from_origin();
+  const double on_plane =
+      std::max(tol::world_rounding(std::max(sides->largest, reach)), tol::kCoplanarSine * 2 * reach);
   bool outside = false;
   for (int s = 0; s < sides->count && !outside; ++s) {
     if (!sides->spans[s]) continue;
@@ -389,7 +393,9 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   // 1.5e-12 out, 1.8e4 L from the origin; rigid-motion, manifuzz check
   // --seed 2026112502). Widening F23's band instead kept such corners
   // unclipped, up to 2e-6 outside a needle's tip 1e4 L out (h7's case).
-  return {on_plane, std::max(on_plane, tol::world_rounding(reference.world_resolution))};
+  // F53: an incident edge within the generator's coplanarity of a side
+  // plane lies in it in every frame (clip_to_plane).
+  return {on_plane, std::max(on_plane, tol::world_rounding(reference.world_resolution)), tol::kCoplanarSine};
 }
 
 bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
@@ -481,7 +487,8 @@ bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane)
 bool clip_to_side(ClipPolygon& incident, const Plane& side, const SideEdge* edge, const SideBands& bands,
                   ClipPolygon& scratch) {
   if (inside_side(incident, side, bands.on_plane)) return true;
-  if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, edge)) return false;
+  if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, edge, bands.in_plane_sine))
+    return false;
   incident.take(scratch);
   return true;
 }

@@ -119,6 +119,8 @@ bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const C
 /// crosses it at its foot (F32, the world's rounding).
 struct SideBands {
   double on_plane = 0, near_plane = 0;
+  /// An incident edge this near a side plane, as a sine, lies in it.
+  double in_plane_sine = 0;
 };
 SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
 /// The side of the reference prism through edge k of the reference loop:
