@@ -34,6 +34,24 @@ TEST(SignedDistance, APointOnAFaceIsOnTheSurfaceWhenRoundingPutsItOutsideAFolded
   EXPECT_LT(std::abs(signed_distance(folded, {}, on_surface)), 1e-9 * folded.diameter());
 }
 
+// A pyramid whose base has a vertex 6.9e-11 below it and 3e-10 from its
+// neighbour: the base's two merged faces and the sliver between them leave
+// a wedge 2.5 wide uncovered, 73 from the short edge. A point there, 4.8e-11
+// inside the hull of the vertices (exact arithmetic), measured 2.55 outside
+// by the faces; the vertices say it is on the surface (h16: a false
+// on-surface of 1.25e-4 L on the built-in, swap-symmetry, manifuzz fuzz
+// --strict).
+TEST(SignedDistance, APointOverACrackBetweenMergedFacesIsOnTheSurfaceOfTheVertices) {
+  const std::vector<Vec3> points = {{10000, 0, 0},   {10000, 1000, 0}, {9600, 2800, 0},   {9100, 4200, 0},
+                                    {8400, 5400, 0}, {6550, 7600, 0},  {-9000, 4200, 0},  {-9900, 1000, 0},
+                                    {-10000, 0, 0},  {8000, -7000, 0}, {9898.214418809326, -1423.1483827328532, 0},
+                                    {0, 0, 10000},   {9898.214418809295, -1423.1483827325628, -6.9e-11}};
+  const Hull pyramid = *build_hull(points).hull;
+  const Vec3 over_the_crack(9890.4653396695066, -1350.3868087508836, -2.0008883439004421e-11);
+  EXPECT_LT(std::abs(signed_distance(pyramid, {}, over_the_crack)), 1e-9 * pyramid.diameter());
+  EXPECT_LT(std::abs(signed_distance_past(pyramid, {}, over_the_crack, 0)), 1e-9 * pyramid.diameter());
+}
+
 // The nearest face by brute force: minus the least depth under a plane
 // inside, the nearest polygon outside.
 double distance_by_every_face(const Hull& hull, const Vec3& p) {
@@ -45,6 +63,19 @@ double distance_by_every_face(const Hull& hull, const Vec3& p) {
     outside = std::min(outside, (closest_point_on_polygon(p, loop.data(), hull.face_size(f), hull.face_normal(f)) - p).norm());
   }
   return inside <= 0 ? inside : outside;
+}
+
+// Where the vertices decide, a point truly outside keeps its distance:
+// past a needle's tip, where the face planes are near and the faces far,
+// and beside its sharp edges, as every face measured one by one says.
+TEST(SignedDistance, APointPastASharpTipOrEdgeKeepsItsDistanceWhereTheVerticesDecide) {
+  const Hull needle = *build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0.5, 0.5, 100}}).hull;
+  const Vec3 tip(0.5, 0.5, 100);
+  for (const Vec3& away : {Vec3(0, 0, 1), Vec3(0.6, 0.8, 0), Vec3(1, 1, 1).normalized(), Vec3(-1, 0, 0.01).normalized()}) {
+    const Vec3 p = tip + 2.0 * away;
+    EXPECT_NEAR(signed_distance(needle, {}, p), distance_by_every_face(needle, p), 1e-12 * needle.diameter())
+        << away.transpose();
+  }
 }
 
 // signed_distance keeps 256 faces' heights and takes the others' again: on

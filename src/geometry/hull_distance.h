@@ -8,7 +8,8 @@ namespace mfz {
 /// Signed Euclidean distance from `world_point` to the surface of `hull` at
 /// `pose`: negative inside (minus the distance to the nearest face plane,
 /// exact for a convex hull), positive outside (distance to the nearest face
-/// polygon).
+/// polygon; where that is more than twice the point's height over every face
+/// plane, no more than the distance to the hull of the vertices).
 double signed_distance(const Hull& hull, const Pose& pose, const Vec3& world_point);
 
 /// signed_distance where it exceeds `allowed` (>= 0), to the bit; otherwise
