@@ -23,7 +23,7 @@ bool along_edge(const Vec3& foot, const SideEdge* edge, double slack) {
 }  // namespace
 
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane, double near_plane,
-                   const SideEdge* edge, double in_plane_sine) {
+                   const SideEdge* edge, double in_plane_sine, double in_plane_band) {
   out.clear();
   if (in.empty()) return true;
   const int n = in.size();
@@ -39,16 +39,15 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
   // 4000 deep, was in one frame only (F53, far-from-origin, manifuzz fuzz
   // --strict, open as O19).
   const auto lies_in_plane = [&](int i, int j) {
-    const double furthest = std::max(std::abs(d[i]), std::abs(d[j]));
-    const Vec3 edge = in[j] - in[i];
-    // The sum of the coordinates' sizes is at least the length: most
-    // outside points are far out, and are told without a root.
-    if (!(furthest <= in_plane_sine * edge.cwiseAbs().sum())) return false;
-    return furthest <= in_plane_sine * edge.norm();
+    return std::max(std::abs(d[i]), std::abs(d[j])) <= in_plane_sine * (in[j] - in[i]).norm();
   };
+  // Past `in_plane_band` (the caller's bound on the sine times any edge's
+  // length) a point lies in no such edge: most outside points are, and are
+  // told by one comparison (measuring their edges cost F53 1% of an 8-point
+  // call).
   const auto inside = [&](int k) {
     return d[k] <= on_plane ||
-           (in_plane_sine > 0 && (lies_in_plane((k + n - 1) % n, k) || lies_in_plane(k, (k + 1) % n)));
+           (d[k] <= in_plane_band && (lies_in_plane((k + n - 1) % n, k) || lies_in_plane(k, (k + 1) % n)));
   };
   bool ok = true;
   Vec3 start = in[n - 1];

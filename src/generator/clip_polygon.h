@@ -73,10 +73,13 @@ struct SideEdge {
 /// `edge` (when given) to within `near_plane`; an inside corner within
 /// `near_plane` of it is its edge's crossing. The ends of an edge that lies
 /// in the plane to `in_plane_sine` (both ends within that sine times its
-/// length) are inside too, and the edge is kept whole. Returns false if `out`
-/// overflowed (cannot happen when in.size() < capacity).
+/// length) are inside too, and the edge is kept whole; `in_plane_band` bounds
+/// that sine times the longest edge the polygon can have (0: no edge lies
+/// in the plane). Returns false if `out` overflowed (cannot happen when
+/// in.size() < capacity).
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
-                   double near_plane = 0, const SideEdge* edge = nullptr, double in_plane_sine = 0);
+                   double near_plane = 0, const SideEdge* edge = nullptr, double in_plane_sine = 0,
+                   double in_plane_band = 0);
 
 /// The tutorial's last step: drops the points outside `plane` without adding
 /// crossing points (it wants contact points, not the clipped polygon).

@@ -385,7 +385,8 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   // by a rounding error at each end.
   // The reference loop's largest coordinate is kept with its sides.
   const double reference_largest = reference.sides ? reference.sides->largest : largest_coordinate(*reference.polygon);
-  const double on_plane = tol::world_rounding(std::max(reference_largest, largest_coordinate(incident)));
+  const double incident_largest = largest_coordinate(incident);
+  const double on_plane = tol::world_rounding(std::max(reference_largest, incident_largest));
   // F32: B's corners carry the rounding of the world's positions into the
   // frame, so a corner that far outside a side plane may be inside it in
   // another frame: its edge crosses at the corner's foot on the plane, not
@@ -394,8 +395,12 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
   // --seed 2026112502). Widening F23's band instead kept such corners
   // unclipped, up to 2e-6 outside a needle's tip 1e4 L out (h7's case).
   // F53: an incident edge within the generator's coplanarity of a side
-  // plane lies in it in every frame (clip_to_plane).
-  return {on_plane, std::max(on_plane, tol::world_rounding(reference.world_resolution)), tol::kCoplanarSine};
+  // plane lies in it in every frame (clip_to_plane). Clipping keeps the
+  // polygon within its corners' hull, so no edge it makes is longer than
+  // twice their reach, sqrt(3) times their largest coordinate.
+  const double longest_edge = 2 * std::sqrt(3.0) * incident_largest;
+  return {on_plane, std::max(on_plane, tol::world_rounding(reference.world_resolution)), tol::kCoplanarSine,
+          tol::kCoplanarSine * longest_edge};
 }
 
 bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
@@ -487,7 +492,8 @@ bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane)
 bool clip_to_side(ClipPolygon& incident, const Plane& side, const SideEdge* edge, const SideBands& bands,
                   ClipPolygon& scratch) {
   if (inside_side(incident, side, bands.on_plane)) return true;
-  if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, edge, bands.in_plane_sine))
+  if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, edge, bands.in_plane_sine,
+                     bands.in_plane_band))
     return false;
   incident.take(scratch);
   return true;

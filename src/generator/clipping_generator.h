@@ -119,8 +119,10 @@ bool sat_face_is_reference(const SatResult& sat, const ClipFace& face_a, const C
 /// crosses it at its foot (F32, the world's rounding).
 struct SideBands {
   double on_plane = 0, near_plane = 0;
-  /// An incident edge this near a side plane, as a sine, lies in it.
-  double in_plane_sine = 0;
+  /// An incident edge this near a side plane, as a sine, lies in it; the
+  /// sine times the longest edge the incident polygon can have, past which
+  /// no point lies in such an edge.
+  double in_plane_sine = 0, in_plane_band = 0;
 };
 SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident);
 /// The side of the reference prism through edge k of the reference loop:
