@@ -250,5 +250,31 @@ TEST(SatHint, EdgePairsAlongOneAxisAnswerWithTheSameBitsWhicheverIsTheHint) {
   EXPECT_EQ(along, 10) << "five edges of A and two of B along the axis";
 }
 
+// F54: a needle touching a cone, 2.0008883439004421e-11 deep, where two
+// edge axes 7 degrees apart (A's edges 13 and 25, each with B's edge 2)
+// have the same overlap to the bit. Without a hint SAT answers with the
+// first; with that answer as the hint, the hint's ceiling let the bounds
+// meet the second first, and the second call answered with it. With its
+// own answer as the hint, a call answers as the call without one.
+TEST(SatHint, TwoEdgeAxesTiedAtTouchingAnswerAsTheColdCallWithItsAnswerAsTheHint) {
+  const CaseParse parsed = read_case_file(test::corpus_path(
+      "regressions/f54-two-edge-axes-7-degrees-apart-tie-at-touching-and-the-hint-s-ceiling-picked-the-other.case"));
+  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
+  const test::PosedCase posed(*parsed.value);
+  ASSERT_TRUE(posed.built);
+  const Pose frame_a{Vec3::Zero(), posed.pose_a.orientation};
+  const Pose frame_b{posed.pose_b.position - posed.pose_a.position, posed.pose_b.orientation};
+  const PosedHull a(posed.view_a, frame_a), b(posed.view_b, frame_b);
+  const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
+  ASSERT_FALSE(cold.separated);
+  ASSERT_EQ(cold.kind, AxisKind::edge_edge);
+  const PosedHull a_again(posed.view_a, frame_a), b_again(posed.view_b, frame_b);
+  const SatResult warm = run_sat_with_hint(a_again, b_again, {cold.kind, cold.feature_a, cold.feature_b});
+  EXPECT_EQ(warm.feature_a, cold.feature_a);
+  EXPECT_EQ(warm.feature_b, cold.feature_b);
+  EXPECT_EQ(warm.depth, cold.depth);
+  EXPECT_EQ(warm.normal, cold.normal);
+}
+
 }  // namespace
 }  // namespace mfz

@@ -808,7 +808,21 @@ SatResult run_sat_with_hint(const PosedHull& a, const PosedHull& b, const AxisHi
   double overlap = std::numeric_limits<double>::infinity();
   SatResult separated;
   if (!hint_overlap(a, b, hint, overlap, separated)) return separated;
-  return bounded_sat(a, b, overlap);
+  const SatResult sat = bounded_sat(a, b, overlap);
+  // Another axis than the hint's, no shallower than it to the bounds' tie
+  // room: the two tie, and which one the bounds met first was the hint's
+  // doing, so the call without it decides. Two edge axes 7 degrees apart,
+  // both 2.0008883439004421e-11 deep at touching, answered by the hint's
+  // ceiling in one order and without it in the other (F54, deterministic,
+  // manifuzz fuzz --strict). An axis further below the hint's is the pose's
+  // doing, and stands.
+  const bool hinted_other = std::isfinite(overlap) && !sat.separated &&
+                            (sat.kind != hint.kind || sat.feature_a != hint.feature_a || sat.feature_b != hint.feature_b);
+  if (!hinted_other) return sat;
+  const double reach = std::max(a.reach_from_origin(), b.reach_from_origin());
+  const double tie_room = tol::kEdgeAxisBias * 2 * reach + 4 * tol::world_rounding(3 * reach);
+  if (sat.depth < overlap - 2 * tie_room) return sat;
+  return bounded_sat(a, b, std::numeric_limits<double>::infinity());
 }
 
 SatResult run_sat(const PosedHull& a, const PosedHull& b) {
