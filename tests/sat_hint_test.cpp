@@ -223,11 +223,10 @@ TEST(SatHint, EdgePairsAlongOneAxisAnswerWithTheSameBitsWhicheverIsTheHint) {
   const CaseParse parsed = read_case_file(test::corpus_path(
       "regressions/f51-edge-pairs-along-one-axis-named-by-the-bounds-so-a-hint-picked-another-1e-16-deeper.case"));
   ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
-  const test::PosedCase posed(*parsed.value);
+  test::PosedCase posed(*parsed.value);
   ASSERT_TRUE(posed.built);
-  const Pose frame_a{Vec3::Zero(), posed.pose_a.orientation};
-  const Pose frame_b{posed.pose_b.position - posed.pose_a.position, posed.pose_b.orientation};
-  const PosedHull a(posed.view_a, frame_a), b(posed.view_b, frame_b);
+  posed.centre_on_a();
+  const PosedHull a = posed.a(), b = posed.b();
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);
@@ -260,16 +259,14 @@ TEST(SatHint, TwoEdgeAxesTiedAtTouchingAnswerAsTheColdCallWithItsAnswerAsTheHint
   const CaseParse parsed = read_case_file(test::corpus_path(
       "regressions/f54-two-edge-axes-7-degrees-apart-tie-at-touching-and-the-hint-s-ceiling-picked-the-other.case"));
   ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
-  const test::PosedCase posed(*parsed.value);
+  test::PosedCase posed(*parsed.value);
   ASSERT_TRUE(posed.built);
-  const Pose frame_a{Vec3::Zero(), posed.pose_a.orientation};
-  const Pose frame_b{posed.pose_b.position - posed.pose_a.position, posed.pose_b.orientation};
-  const PosedHull a(posed.view_a, frame_a), b(posed.view_b, frame_b);
+  posed.centre_on_a();
+  const PosedHull a = posed.a(), b = posed.b();
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);
-  const PosedHull a_again(posed.view_a, frame_a), b_again(posed.view_b, frame_b);
-  const SatResult warm = run_sat_with_hint(a_again, b_again, {cold.kind, cold.feature_a, cold.feature_b});
+  const SatResult warm = run_sat_with_hint(posed.a(), posed.b(), {cold.kind, cold.feature_a, cold.feature_b});
   EXPECT_EQ(warm.feature_a, cold.feature_a);
   EXPECT_EQ(warm.feature_b, cold.feature_b);
   EXPECT_EQ(warm.depth, cold.depth);

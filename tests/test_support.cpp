@@ -33,6 +33,11 @@ PosedCase::PosedCase(const CaseFile& file)
   pose_b.orientation.normalize();
 }
 
+void PosedCase::centre_on_a() {
+  pose_b.position -= pose_a.position;
+  pose_a.position = Vec3::Zero();
+}
+
 namespace {
 
 std::vector<Vec3> scaled(std::vector<Vec3> points, double factor) {

@@ -33,6 +33,9 @@ struct PosedCase {
   Pose pose_a, pose_b;
   PosedHull a() const { return PosedHull(view_a, pose_a); }
   PosedHull b() const { return PosedHull(view_b, pose_b); }
+  /// Moves both poses so that A's position is the origin: the frame the
+  /// generator works in (F21), where the fuzzer met its pairs.
+  void centre_on_a();
 };
 
 /// Two clouds overlapping for SAT's tests: A from `points_a` about the

@@ -485,6 +485,13 @@ void name_by_supporting_edges(const PosedHull& a, const PosedHull& b, SatResult&
   best.support = &support;
 }
 
+// Within this of each other two axes' overlaps tie: F41's bias for an edge
+// axis, of the hulls' reach, and four times the rounding of the bounds,
+// taken at `magnitude`, the largest coordinate they read.
+double axis_tie_room(double reach, double magnitude) {
+  return tol::kEdgeAxisBias * 2 * reach + 4 * tol::world_rounding(magnitude);
+}
+
 // `hint_overlap`: the overlap along the axis that answered the pair's last
 // call (infinite without one), which bounds the depth this call finds: no
 // axis overlaps less than the penetration depth, and the axis SAT picks
@@ -500,8 +507,8 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   a.turn_face_normals(), b.turn_face_normals();
   // More than any tie's slack in `consider` (its extents are at most twice
   // the reach), plus the bounds' own rounding.
-  const double rounding = 4 * tol::world_rounding(std::max(sa.extent, sb.extent) + sa.reach + sb.reach);
-  const double tie_room = tol::kEdgeAxisBias * 2 * std::max(sa.reach, sb.reach) + rounding;
+  const double tie_room =
+      axis_tie_room(std::max(sa.reach, sb.reach), std::max(sa.extent, sb.extent) + sa.reach + sb.reach);
   SatResult best;
   best.depth = std::numeric_limits<double>::infinity();
   const auto hopeless = [&](double lower) { return lower > best.depth + tie_room; };
@@ -819,9 +826,9 @@ SatResult run_sat_with_hint(const PosedHull& a, const PosedHull& b, const AxisHi
   const bool hinted_other = std::isfinite(overlap) && !sat.separated &&
                             (sat.kind != hint.kind || sat.feature_a != hint.feature_a || sat.feature_b != hint.feature_b);
   if (!hinted_other) return sat;
+  // The reach from the origin bounds bounded_sat's reach and coordinates.
   const double reach = std::max(a.reach_from_origin(), b.reach_from_origin());
-  const double tie_room = tol::kEdgeAxisBias * 2 * reach + 4 * tol::world_rounding(3 * reach);
-  if (sat.depth < overlap - 2 * tie_room) return sat;
+  if (sat.depth < overlap - 2 * axis_tie_room(reach, 3 * reach)) return sat;
   return bounded_sat(a, b, std::numeric_limits<double>::infinity());
 }
 
