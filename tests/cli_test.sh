@@ -214,12 +214,21 @@ check_that "a quaternion near 1e154 is the same rotation" test "$plain" = "$("$m
 check_that "a quaternion near 1e-160 is the same rotation" test "$plain" = "$("$manifuzz" replay --json "$scratch/tiny_quat.case" | sed 's/"file":"[^"]*"//')"
 awk '/^pose B/ {print "pose B  1e16 0 0.9  1 0 0 0"; next} /^pose A/ {print "pose A  1e16 0 0  1 0 0 0"; next} {print}' "$good" >"$scratch/far.case"
 expect_one_line_error 'from the origin' -- "$manifuzz" replay "$scratch/far.case"
-# A hull the world frame cannot resolve: 5e-4 across, 1e56 from the origin,
-# beside a hull of 8e70 (manifuzz fuzz on the built-in).
-{ echo "manifuzz-case 1"; echo "hull A"; echo "v 0 0 0"; echo "v 8e70 8e70 0"; echo "v 0 0 8e70"; echo "v 0 8e70 0"
+# A hull the world frame cannot resolve: 5e-4 across beside a hull of 8e25
+# (manifuzz fuzz on the built-in found it 1e56 out beside one of 8e70,
+# which the coordinate limit now refuses first).
+{ echo "manifuzz-case 1"; echo "hull A"; echo "v 0 0 0"; echo "v 8e25 8e25 0"; echo "v 0 0 8e25"; echo "v 0 8e25 0"
   echo "pose A  0 0 0  1 0 0 0"; echo "hull B"; echo "v -5e-4 0 0"; echo "v -5e-4 0 -5e-4"; echo "v -5e-4 5e-4 0"; echo "v 0 0 0"
-  echo "pose B  0 3e55 1e56  -0.5 0.5 -0.5 0.5"; } >"$scratch/unresolved.case"
+  echo "pose B  0 3e10 1e11  -0.5 0.5 -0.5 0.5"; } >"$scratch/unresolved.case"
 expect_one_line_error 'hull B .* not resolved' -- "$manifuzz" replay "$scratch/unresolved.case"
+# Past the coordinate limit (O20: a tetrahedron 3e78 long answered with the
+# normal (0, 0, 0)), in a hull and in a position.
+{ echo "manifuzz-case 1"; echo "hull A"; echo "v 2e72 0 0"; echo "v 0 0 0"; echo "v 0 0 3e78"; echo "v 0 1e70 0"
+  echo "pose A  0 0 0  1 0 0 0"; echo "hull B"; echo "v 2e72 0 0"; echo "v 0 0 0"; echo "v 0 0 3e78"; echo "v 0 1e70 0"
+  echo "pose B  0 0 0  1 0 -0.1 0"; } >"$scratch/huge.case"
+expect_one_line_error 'hull A: .*coordinate of 3e\+78 is past the limit of 1e\+30' -- "$manifuzz" replay "$scratch/huge.case"
+awk '/^pose B/ {print "pose B  0 2e30 0.9  1 0 0 0"; next} {print}' "$good" >"$scratch/far_position.case"
+expect_one_line_error 'position has a coordinate of 2e\+30, past the limit' -- "$manifuzz" replay "$scratch/far_position.case"
 { echo "manifuzz-case 1"; echo "hull A"; for i in $(seq 1 1100); do echo "v $i $((i * i % 97)) $((i % 13))"; done
   echo "pose A 0 0 0 1 0 0 0"; echo "hull B"; echo "v 0 0 0"; echo "v 1 0 0"; echo "v 0 1 0"; echo "v 0 0 1"; echo "pose B 0 0 0 1 0 0 0"; } >"$scratch/many.case"
 expect_one_line_error 'more than 1024 points' -- "$manifuzz" replay "$scratch/many.case"

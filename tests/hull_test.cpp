@@ -108,6 +108,18 @@ TEST(HullBuilding, NanOrInfIsAnError) {
   EXPECT_NE(built.error.find("NaN"), std::string::npos) << built.error;
 }
 
+// O20: a tetrahedron 3e78 long is past what a generator's squared cross
+// products of edges can hold; 1e30 is the limit, and a hull at it builds.
+TEST(HullBuilding, ACoordinatePastTheLimitIsAnErrorAndOneAtItBuilds) {
+  std::vector<Vec3> points = box_points(1, 1, 1);
+  for (Vec3& p : points) p *= 1e30;
+  EXPECT_TRUE(build_hull(points).hull);
+  points[5].z() = -3e30;
+  const HullBuild built = build_hull(points);
+  EXPECT_FALSE(built.hull);
+  EXPECT_NE(built.error.find("coordinate of 3e+30 is past the limit"), std::string::npos) << built.error;
+}
+
 TEST(HullBuilding, CoplanarCloudIsAnError) {
   const HullBuild built = build_hull({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0.5, 0.5, 0}});
   EXPECT_FALSE(built.hull);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -328,6 +329,13 @@ HullBuild build_hull(const std::vector<Vec3>& points) {
   if (points.size() < 4) return {std::nullopt, "fewer than four points (" + std::to_string(points.size()) + ")"};
   for (const Vec3& p : points)
     if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
+  double largest = 0;
+  for (const Vec3& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  if (largest > tol::kLargestCoordinate) {
+    char why[120];
+    std::snprintf(why, sizeof why, "a coordinate of %.3g is past the limit of %g", largest, tol::kLargestCoordinate);
+    return {std::nullopt, why};
+  }
   if (std::string why = flatness_error(points); !why.empty()) return {std::nullopt, why};
 
   // A small cloud in general position without Qhull's set-up; where its
