@@ -5,9 +5,12 @@
 // plugins it also counts the calls whose answers differ, shows the first,
 // and how far the answers moved (points, depth, normal; Change below).
 // A speed change that claims to keep every answer is checked with it against
-// the plugin built before the change, on the same pairs the timings use.
+// the plugin built before the change, on the same pairs the timings use. A
+// change meant to alter some answers names a folder too: each call whose
+// answers differ (the first 100) is written there as a case file
+// (FAMILY-PAIR[-swapped].case), for `manifuzz replay` to judge both answers.
 //
-//   answer_fingerprint PLUGIN [BASELINE]     (`builtin` names the built-in)
+//   answer_fingerprint PLUGIN [BASELINE [CASE_FOLDER]]   (`builtin` names the built-in)
 //
 // Exits 0 when the answers are the same bytes (or with one plugin), 1 when
 // two plugins differ, 2 on bad arguments or a library that is no generator.
@@ -23,6 +26,7 @@
 #include <vector>
 
 #include "bench_families.h"
+#include "case/case_file.h"
 #include "harness/generator.h"
 
 namespace mfz {
@@ -99,6 +103,32 @@ struct Digest {
   }
 };
 
+// A folder gets the first this many differing calls: a change meant to
+// alter a few answers is judged on all of them, and another generator's
+// thousands of answers do not fill the disk.
+constexpr long long kWrittenCalls = 100;
+
+// The call as a case file: the hulls' vertices and poses, in the call's order.
+bool write_call(const std::string& folder, const std::string& family, size_t pair, bool swapped, const Scene& s) {
+  CaseFile c;
+  const auto vertices = [](const Hull& hull) {
+    std::vector<Vec3> points;
+    for (int i = 0; i < hull.vertex_count(); ++i) points.push_back(hull.vertex(i));
+    return points;
+  };
+  c.points_a = vertices(swapped ? s.hull_b : s.hull_a);
+  c.points_b = vertices(swapped ? s.hull_a : s.hull_b);
+  c.pose_a = swapped ? s.pose_b : s.pose_a;
+  c.pose_b = swapped ? s.pose_a : s.pose_b;
+  c.extensions.push_back("note answer_fingerprint: " + family + ", pair " + std::to_string(pair) +
+                         (swapped ? " (B, A)" : ""));
+  std::string name = family + "-" + std::to_string(pair) + (swapped ? "-swapped" : "") + ".case", error;
+  std::replace(name.begin(), name.end(), ' ', '-');
+  if (write_case_file(folder + "/" + name, c, error)) return true;
+  std::fprintf(stderr, "answer_fingerprint: %s\n", error.c_str());
+  return false;
+}
+
 std::optional<Generator> open_generator(const char* spec) {
   if (std::strcmp(spec, "builtin") == 0) return Generator::builtin();
   std::string error;
@@ -108,13 +138,14 @@ std::optional<Generator> open_generator(const char* spec) {
 }
 
 int run(int argc, char** argv) {
-  if (argc < 2 || argc > 3) {
-    std::fprintf(stderr, "usage: answer_fingerprint PLUGIN [BASELINE]\n");
+  if (argc < 2 || argc > 4) {
+    std::fprintf(stderr, "usage: answer_fingerprint PLUGIN [BASELINE [CASE_FOLDER]]\n");
     return 2;
   }
+  const std::string case_folder = argc == 4 ? argv[3] : "";
   const std::optional<Generator> plugin = open_generator(argv[1]);
-  const std::optional<Generator> baseline = argc == 3 ? open_generator(argv[2]) : std::nullopt;
-  if (!plugin || (argc == 3 && !baseline)) return 2;
+  const std::optional<Generator> baseline = argc >= 3 ? open_generator(argv[2]) : std::nullopt;
+  if (!plugin || (argc >= 3 && !baseline)) return 2;
   long long calls = 0, differing = 0;
   for (const bench::BenchFamily& family : bench::bench_families()) {
     Digest digest;
@@ -130,6 +161,9 @@ int run(int argc, char** argv) {
         if (before.bytes == mine.bytes) continue;
         if (differing == 0)
           std::printf("first difference: %s, pair %zu%s\n", family.name.c_str(), i, swapped ? " (B, A)" : "");
+        if (!case_folder.empty() && differing < kWrittenCalls &&
+            !write_call(case_folder, family.name, i, swapped, family.scenes[i]))
+          return 2;
         ++differing, ++family_differing;
         change.add(mine, before, family.scenes[i].scale);
       }

@@ -226,6 +226,36 @@ TEST(PolygonReduction, DropsTheFlattestCornersFirst) {
   for (int k = 0; k < 4; ++k) EXPECT_NE(polygon[k], Vec3(0, 0.5, 0));
 }
 
+// A cloud in no loop order (the incident faces' and F27's points) keeps its
+// outline's corners, counter-clockwise about the normal; the points inside
+// it and on its edges go (F55).
+TEST(PolygonOutline, KeepsTheCornersOfACloudCounterClockwiseAboutTheNormal) {
+  ClipPolygon cloud;
+  for (const Vec3& p : {Vec3(0.5, 0.5, 0.3), Vec3(1, 1, 0), Vec3(0, 0.5, 0), Vec3(0, 0, 0.1), Vec3(0.2, 0.7, -0.2),
+                        Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 1, 0), Vec3(0.5, 0, 0.2)})
+    cloud.push(p);
+  ClipPolygon scratch;
+  ClipPolygon up = cloud;
+  keep_outline(up, Vec3(0, 0, 1), scratch);
+  ASSERT_EQ(up.size(), 4);
+  for (int k = 0; k < 4; ++k) {
+    const Vec3 edge = up[(k + 1) % 4] - up[k], next = up[(k + 2) % 4] - up[(k + 1) % 4];
+    EXPECT_GT(edge.cross(next).z(), 0) << "corner " << k;
+    EXPECT_TRUE(std::abs(up[k].x() - 0.5) == 0.5 && std::abs(up[k].y() - 0.5) == 0.5) << up[k].transpose();
+  }
+  ClipPolygon down = cloud;
+  keep_outline(down, Vec3(0, 0, -1), scratch);
+  ASSERT_EQ(down.size(), 4);
+  EXPECT_LT((down[1] - down[0]).cross(down[2] - down[1]).z(), 0);
+}
+
+TEST(PolygonOutline, LeavesTwoPointsAsTheyAre) {
+  ClipPolygon two, scratch;
+  two.push(Vec3(0, 0, 0)), two.push(Vec3(1, 0, 0));
+  keep_outline(two, Vec3(0, 0, 1), scratch);
+  EXPECT_EQ(two.size(), 2);
+}
+
 TEST(ClipPolygon, RefusesToGrowPastItsCapacity) {
   ClipPolygon polygon;
   for (int k = 0; k < kMaxPolygonVertices; ++k) ASSERT_TRUE(polygon.push(Vec3::Zero()));

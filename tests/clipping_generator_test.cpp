@@ -221,6 +221,24 @@ std::pair<int, int> contact_counts_as_given_and_moved(const std::string& regress
   return {as_given.contact_count, moved.contact_count};
 }
 
+// A needle cone 2000 long whose ridge runs 1.5e-4 rad off B's reference face:
+// the first-touching region reaches 0.5 up the ridge. The incident face (a
+// rim face of the crumpled base, 5.7 degrees off) and F27's faces gave 65
+// points, one past the ABI's 64, and only the incident face's three were
+// kept, within 0.003 of the base (F55, spans-contact-region, open as O21).
+TEST(ClippingGenerator, PastTheAbisCapacityTheContactsKeepTheOutlineOfEveryFaceBelowTheReferencePlane) {
+  const CaseParse parsed = read_case_file(test::corpus_path(
+      "regressions/f55-past-the-abi-s-64-contacts-a-needle-cone-s-ridge-lost-the-points-f27-s-faces-gave.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const Scene s = *make_scene(*parsed.value).scene;
+  mfz_manifold out{};
+  ASSERT_EQ(generate_clipping_manifold(s.hull_a.view(), s.abi_pose_a(), s.hull_b.view(), s.abi_pose_b(), out), 0);
+  ASSERT_GT(out.contact_count, 3);
+  double highest = -1;
+  for (int i = 0; i < out.contact_count; ++i) highest = std::max(highest, out.contacts[i].point_on_a.z);
+  EXPECT_GT(highest, 0.49);  // up the ridge to where it leaves B's face
+}
+
 // A thin wedge 5e15 from the origin: the far end of its 2000-long edge
 // stands 63 beside the column of the corner kept at its near end, within the
 // world's rounding of the poses (about 72) that F30's column allows. The

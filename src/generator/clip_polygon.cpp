@@ -25,8 +25,8 @@ bool along_edge(const Vec3& foot, const SideEdge* edge, double slack) {
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane, double near_plane,
                    const SideEdge* edge, double in_plane_sine, double in_plane_band) {
   out.clear();
-  if (in.empty()) return true;
   const int n = in.size();
+  if (n <= 0) return true;
   double d[kMaxPolygonVertices];
   for (int k = 0; k < n; ++k) d[k] = plane.signed_distance(in[k]);
   // A point is inside within `on_plane`, or as an end of an edge that lies
@@ -125,6 +125,46 @@ void remove_points_outside(ClipPolygon& polygon, const Plane& plane) {
     if (plane.signed_distance(polygon[k]) > 0) polygon.erase(k);
 }
 
+namespace {
+
+// Twice the signed area of the triangle o, a, b in the projection's plane:
+// positive where b lies to the left of o -> a.
+double turn(const Vec3& o, const Vec3& a, const Vec3& b) {
+  return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+}
+
+}  // namespace
+
+// Andrew's monotone chain on the points projected onto two axes across
+// `normal`, held in `scratch` as (x, y, 0); sorted by x, then y, then
+// number, so that equal projections keep one order in every call.
+void keep_outline(ClipPolygon& points, const Vec3& normal, ClipPolygon& scratch) {
+  const int n = points.size();
+  if (n < 3) return;
+  const Vec3 across = normal.unitOrthogonal(), up = normal.cross(across);
+  scratch.clear();
+  for (int k = 0; k < n; ++k) scratch.push(Vec3(across.dot(points[k]), up.dot(points[k]), 0), points.is_crossing(k));
+  std::array<int, kMaxPolygonVertices> order;
+  for (int k = 0; k < n; ++k) order[k] = k;
+  std::sort(order.begin(), order.begin() + n, [&](int i, int j) {
+    const Vec3 &p = scratch[i], &q = scratch[j];
+    return p.x() != q.x() ? p.x() < q.x() : p.y() != q.y() ? p.y() < q.y() : i < j;
+  });
+  std::array<int, kMaxPolygonVertices + 1> hull;
+  int h = 0;
+  for (int pass = 0; pass < 2; ++pass) {  // the lower chain, then the upper
+    const int floor = h;
+    for (int s = 0; s < n; ++s) {
+      const int k = order[pass == 0 ? s : n - 1 - s];
+      while (h >= floor + 2 && turn(scratch[hull[h - 2]], scratch[hull[h - 1]], scratch[k]) <= 0) --h;
+      hull[h++] = k;
+    }
+    --h;  // each chain's last point starts the other
+  }
+  scratch.take(points);
+  points.clear();
+  for (int k = 0; k < h; ++k) points.push(scratch[hull[k]], scratch.is_crossing(hull[k]));
+}
 
 void reduce_polygon(ClipPolygon& polygon, int capacity) {
   while (polygon.size() > capacity) {

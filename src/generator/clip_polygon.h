@@ -85,6 +85,13 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
 /// crossing points (it wants contact points, not the clipped polygon).
 void remove_points_outside(ClipPolygon& polygon, const Plane& plane);
 
+/// Replaces the points, a cloud in no loop order, by the corners of their
+/// convex hull seen along `normal`, counter-clockwise about it; points on
+/// the hull's edges are dropped. `scratch` is overwritten. The points the
+/// incident faces and F27's faces give are such a cloud, and past the ABI's
+/// capacity their outline is what reduce_polygon can shrink (F55).
+void keep_outline(ClipPolygon& points, const Vec3& normal, ClipPolygon& scratch);
+
 /// Removes, one at a time, the point whose triangle with its two neighbours
 /// has the least area, until at most `capacity` are left: the polygon's shape,
 /// and so the support it gives a solver, changes least.

@@ -206,6 +206,34 @@ struct ClipWorkspace {
   PrismSides sides;
 };
 
+// Past the ABI's capacity the incident faces' and F27's points, a cloud in
+// no loop order, give way to the corners of their outline seen along the
+// reference normal, reduced as a loop, and the deepest point: the contacts
+// still span the region F27's faces reach, and still hold the depth. Only
+// points below the reference plane count: one on it is no contact, and a
+// 59-point hull's faces met the plane in an outline wider than its incident
+// face, whose 14 points at the full depth were then all dropped. The
+// incident faces' points alone, kept past the capacity before, lost the
+// region (F55: a needle cone's ridge 1.5e-4 rad off the reference face, its
+// incident face a rim face 5.7 degrees off, contacts within 0.003 of the
+// base where the first-touching region reached 0.5 up the ridge;
+// spans-contact-region, manifuzz fuzz --strict, open as O21).
+void keep_outline_and_deepest(ClipPolygon& points, const Plane& reference_plane, ClipPolygon& scratch) {
+  for (int k = points.size() - 1; k >= 0; --k)
+    if (!(reference_plane.signed_distance(points[k]) < 0)) points.erase(k);
+  if (points.size() <= MFZ_MAX_CONTACTS) return;
+  int deepest = 0;
+  for (int k = 1; k < points.size(); ++k)
+    if (reference_plane.signed_distance(points[k]) < reference_plane.signed_distance(points[deepest])) deepest = k;
+  const Vec3 deepest_point = points[deepest];
+  const bool deepest_crossing = points.is_crossing(deepest);
+  keep_outline(points, reference_plane.normal, scratch);
+  reduce_polygon(points, MFZ_MAX_CONTACTS - 1);
+  for (int k = 0; k < points.size(); ++k)
+    if (points[k] == deepest_point) return;
+  points.push(deepest_point, deepest_crossing);
+}
+
 // This thread's workspace, looked up once by each call that holds it.
 [[gnu::noinline]] ClipWorkspace& thread_workspace() {
   static thread_local ClipWorkspace work;
@@ -794,11 +822,13 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
                                 std::max(resolution, world_resolution), work, clipped) &&
       trace)
     record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
-  // More than the ABI holds: the incident faces' own points, as before
-  // F27, rather than a reduction of points in no loop order (a 59-point
-  // hull's 67 points reduced to none: has-contacts, the second campaign).
+  // More than the ABI holds: the outline of the contacts and the deepest of
+  // them (keep_outline_and_deepest). A reduction of the points in no loop
+  // order left a 59-point hull's 67 points without their shape
+  // (has-contacts, the second campaign); the incident faces' own points
+  // alone, kept for that, left the region F27's faces reach (F55).
   if (clipped.size() + other_way > MFZ_MAX_CONTACTS && clipped.size() + other_way > from_incident_faces) {
-    while (clipped.size() > from_incident_faces) clipped.erase(clipped.size() - 1);
+    keep_outline_and_deepest(clipped, reference_plane, work.below);
     other_way = 0;
   }
   reduce_polygon(clipped, MFZ_MAX_CONTACTS);
