@@ -665,6 +665,8 @@ ClippingSteps::ClippingSteps()
 //     below the incident face's plane too (F50).
 //  6. Each remaining point is a contact with its own penetration, measured
 //     from the reference polygon along n (F50's from the incident face's).
+//     Past the ABI's 64, the outline of the points below the reference
+//     plane, reduced to 63, and the deepest point (F55).
 //  7. Nothing left at a positive depth: the crossing supporting edges (F16),
 //     then the deepest vertex inside the reference hull paired with where a
 //     ray along n leaves it (F17, F18), then the edge axis the face axis
