@@ -39,10 +39,10 @@ inline constexpr double kSmallestHullOverRounding = 1e3;
 /// Input limit: no coordinate of a hull's point or a pose's position may
 /// exceed this in magnitude. A generator squares lengths of products of
 /// coordinates: the squared length of a cross product of two edges is a
-/// fourth power of them, and it overflows past about 1e77 (O20: a
-/// tetrahedron 3e78 long answered with the normal (0, 0, 0), its edge axis
-/// divided by an infinite norm). At 1e30 an eighth power of a case the
-/// relations moved 1e4 L out and doubled stays finite.
+/// fourth power of them, and it overflows past about 1e77. At 1e30 an
+/// eighth power of a case the relations moved 1e4 L out and doubled stays
+/// finite. (h17, open as O20: a tetrahedron 3e78 long was answered with the
+/// normal (0, 0, 0), its edge axis divided by an infinite norm.)
 inline constexpr double kLargestCoordinate = 1e30;
 
 /// Under a profile's precision (float), a case whose rounding in that
