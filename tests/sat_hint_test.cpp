@@ -273,5 +273,41 @@ TEST(SatHint, TwoEdgeAxesTiedAtTouchingAnswerAsTheColdCallWithItsAnswerAsTheHint
   EXPECT_EQ(warm.normal, cold.normal);
 }
 
+// F56: two needles, 1e-3 and 1e-6 wide, touching corner to corner 1e3 from
+// the origin, 5.5e-15 deep. SAT takes the edge axis from the
+// parallelepipeds' zones' first edges and names it by the supporting
+// edges; the hint recomputed the axis from those, and B's edge, 1e-3 long,
+// turned it by 4e-11, enough for an overlap of -3.0e-14 past the hint's
+// band of rounding. Whichever pair along the axis is the hint, the call
+// answers as the call without one, to the bit.
+TEST(SatHint, ParallelEdgesOfTouchingNeedlesAsTheHintAnswerAsTheColdCall) {
+  const CaseParse parsed = read_case_file(test::corpus_path(
+      "regressions/f56-two-needles-touching-corner-to-corner-1e3-out-a-hint-named-by-another-edge-proved-them-apart.case"));
+  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
+  test::PosedCase posed(*parsed.value);
+  ASSERT_TRUE(posed.built);
+  posed.centre_on_a();
+  const PosedHull a = posed.a(), b = posed.b();
+  const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
+  ASSERT_FALSE(cold.separated);
+  ASSERT_EQ(cold.kind, AxisKind::edge_edge);
+  const HullTopology &ta = *a.topology(), &tb = *b.topology();
+  int along = 0;
+  for (int ea = 0; ea < ta.edge_count(); ++ea)
+    for (int eb = 0; eb < tb.edge_count(); ++eb) {
+      const Vec3 edge_a = a.world_vertex(ta.edge(ea).v1) - a.world_vertex(ta.edge(ea).v0);
+      const Vec3 edge_b = b.world_vertex(tb.edge(eb).v1) - b.world_vertex(tb.edge(eb).v0);
+      const Vec3 axis = edge_a.cross(edge_b);
+      if (!(axis.norm() > 1e-6 * edge_a.norm() * edge_b.norm()) || axis.normalized().cross(cold.normal).norm() > 1e-6)
+        continue;
+      ++along;
+      const SatResult warm = run_sat_with_hint(a, b, {AxisKind::edge_edge, ea, eb});
+      EXPECT_EQ(warm.separated, cold.separated) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.depth, cold.depth) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.normal, cold.normal) << "hint: A's edge " << ea << " with B's " << eb;
+    }
+  EXPECT_EQ(along, 16) << "four edges of each needle along the axis";
+}
+
 }  // namespace
 }  // namespace mfz
