@@ -211,6 +211,30 @@ TEST(SatHint, AFaceThatSeparatesReversedAtTouchingIsMeasuredWhateverTheHint) {
     EXPECT_TRUE(run_sat_with_hint(a, b, {AxisKind::face_b, -1, f}).separated) << "hint: face " << f << " of B";
 }
 
+// Gives each edge pair along `cold`'s axis (to 1e-6 rad) as the hint, and
+// expects the call to answer as `cold`, to the bit; returns how many pairs
+// lie along it.
+int hints_along_the_axis_answering_as(const PosedHull& a, const PosedHull& b, const SatResult& cold) {
+  const HullTopology &ta = *a.topology(), &tb = *b.topology();
+  int along = 0;
+  for (int ea = 0; ea < ta.edge_count(); ++ea)
+    for (int eb = 0; eb < tb.edge_count(); ++eb) {
+      const Vec3 edge_a = a.world_vertex(ta.edge(ea).v1) - a.world_vertex(ta.edge(ea).v0);
+      const Vec3 edge_b = b.world_vertex(tb.edge(eb).v1) - b.world_vertex(tb.edge(eb).v0);
+      const Vec3 axis = edge_a.cross(edge_b);
+      if (!(axis.norm() > 1e-6 * edge_a.norm() * edge_b.norm()) || axis.normalized().cross(cold.normal).norm() > 1e-6)
+        continue;
+      ++along;
+      const SatResult warm = run_sat_with_hint(a, b, {AxisKind::edge_edge, ea, eb});
+      EXPECT_EQ(warm.separated, cold.separated) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.feature_a, cold.feature_a) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.feature_b, cold.feature_b) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.depth, cold.depth) << "hint: A's edge " << ea << " with B's " << eb;
+      EXPECT_EQ(warm.normal, cold.normal) << "hint: A's edge " << ea << " with B's " << eb;
+    }
+  return along;
+}
+
 // F51: a 29-point hull with five edges along one direction against a
 // 7-point hull with two: ten edge pairs give one axis, each to its own
 // rounding, and one pair supports the hulls. The first call kept a pair
@@ -230,23 +254,7 @@ TEST(SatHint, EdgePairsAlongOneAxisAnswerWithTheSameBitsWhicheverIsTheHint) {
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);
-  const HullTopology &ta = *a.topology(), &tb = *b.topology();
-  int along = 0;
-  for (int ea = 0; ea < ta.edge_count(); ++ea)
-    for (int eb = 0; eb < tb.edge_count(); ++eb) {
-      const Vec3 edge_a = a.world_vertex(ta.edge(ea).v1) - a.world_vertex(ta.edge(ea).v0);
-      const Vec3 edge_b = b.world_vertex(tb.edge(eb).v1) - b.world_vertex(tb.edge(eb).v0);
-      const Vec3 axis = edge_a.cross(edge_b);
-      if (!(axis.norm() > 1e-6 * edge_a.norm() * edge_b.norm()) || axis.normalized().cross(cold.normal).norm() > 1e-9)
-        continue;
-      ++along;
-      const SatResult warm = run_sat_with_hint(a, b, {AxisKind::edge_edge, ea, eb});
-      EXPECT_EQ(warm.feature_a, cold.feature_a) << "hint: A's edge " << ea << " with B's " << eb;
-      EXPECT_EQ(warm.feature_b, cold.feature_b) << "hint: A's edge " << ea << " with B's " << eb;
-      EXPECT_EQ(warm.depth, cold.depth) << "hint: A's edge " << ea << " with B's " << eb;
-      EXPECT_EQ(warm.normal, cold.normal) << "hint: A's edge " << ea << " with B's " << eb;
-    }
-  EXPECT_EQ(along, 10) << "five edges of A and two of B along the axis";
+  EXPECT_EQ(hints_along_the_axis_answering_as(a, b, cold), 10) << "five edges of A and two of B along the axis";
 }
 
 // F54: a needle touching a cone, 2.0008883439004421e-11 deep, where two
@@ -291,22 +299,7 @@ TEST(SatHint, ParallelEdgesOfTouchingNeedlesAsTheHintAnswerAsTheColdCall) {
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);
-  const HullTopology &ta = *a.topology(), &tb = *b.topology();
-  int along = 0;
-  for (int ea = 0; ea < ta.edge_count(); ++ea)
-    for (int eb = 0; eb < tb.edge_count(); ++eb) {
-      const Vec3 edge_a = a.world_vertex(ta.edge(ea).v1) - a.world_vertex(ta.edge(ea).v0);
-      const Vec3 edge_b = b.world_vertex(tb.edge(eb).v1) - b.world_vertex(tb.edge(eb).v0);
-      const Vec3 axis = edge_a.cross(edge_b);
-      if (!(axis.norm() > 1e-6 * edge_a.norm() * edge_b.norm()) || axis.normalized().cross(cold.normal).norm() > 1e-6)
-        continue;
-      ++along;
-      const SatResult warm = run_sat_with_hint(a, b, {AxisKind::edge_edge, ea, eb});
-      EXPECT_EQ(warm.separated, cold.separated) << "hint: A's edge " << ea << " with B's " << eb;
-      EXPECT_EQ(warm.depth, cold.depth) << "hint: A's edge " << ea << " with B's " << eb;
-      EXPECT_EQ(warm.normal, cold.normal) << "hint: A's edge " << ea << " with B's " << eb;
-    }
-  EXPECT_EQ(along, 16) << "four edges of each needle along the axis";
+  EXPECT_EQ(hints_along_the_axis_answering_as(a, b, cold), 16) << "four edges of each needle along the axis";
 }
 
 }  // namespace
