@@ -7,6 +7,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -211,6 +212,20 @@ TEST(SatHint, AFaceThatSeparatesReversedAtTouchingIsMeasuredWhateverTheHint) {
     EXPECT_TRUE(run_sat_with_hint(a, b, {AxisKind::face_b, -1, f}).separated) << "hint: face " << f << " of B";
 }
 
+// A regression case's hulls, posed in the generator's frame (centred on A's
+// position), where the campaigns met them; null, with a failure, when the
+// case does not read or build.
+std::unique_ptr<test::PosedCase> regression_centred_on_a(const std::string& name) {
+  const CaseParse parsed = read_case_file(test::corpus_path("regressions/" + name));
+  EXPECT_TRUE(parsed.value.has_value()) << parsed.error;
+  if (!parsed.value) return nullptr;
+  auto posed = std::make_unique<test::PosedCase>(*parsed.value);
+  EXPECT_TRUE(posed->built) << name;
+  if (!posed->built) return nullptr;
+  posed->centre_on_a();
+  return posed;
+}
+
 // Gives each edge pair along `cold`'s axis (to 1e-6 rad) as the hint, and
 // expects the call to answer as `cold`, to the bit; returns how many pairs
 // lie along it.
@@ -244,13 +259,10 @@ int hints_along_the_axis_answering_as(const PosedHull& a, const PosedHull& b, co
 // bit, named by the supporting pair. In the generator's frame, centred on
 // A's position, where the fuzzer met it.
 TEST(SatHint, EdgePairsAlongOneAxisAnswerWithTheSameBitsWhicheverIsTheHint) {
-  const CaseParse parsed = read_case_file(test::corpus_path(
-      "regressions/f51-edge-pairs-along-one-axis-named-by-the-bounds-so-a-hint-picked-another-1e-16-deeper.case"));
-  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
-  test::PosedCase posed(*parsed.value);
-  ASSERT_TRUE(posed.built);
-  posed.centre_on_a();
-  const PosedHull a = posed.a(), b = posed.b();
+  const auto posed = regression_centred_on_a(
+      "f51-edge-pairs-along-one-axis-named-by-the-bounds-so-a-hint-picked-another-1e-16-deeper.case");
+  ASSERT_TRUE(posed);
+  const PosedHull a = posed->a(), b = posed->b();
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);
@@ -264,17 +276,14 @@ TEST(SatHint, EdgePairsAlongOneAxisAnswerWithTheSameBitsWhicheverIsTheHint) {
 // meet the second first, and the second call answered with it. With its
 // own answer as the hint, a call answers as the call without one.
 TEST(SatHint, TwoEdgeAxesTiedAtTouchingAnswerAsTheColdCallWithItsAnswerAsTheHint) {
-  const CaseParse parsed = read_case_file(test::corpus_path(
-      "regressions/f54-two-edge-axes-7-degrees-apart-tie-at-touching-and-the-hint-s-ceiling-picked-the-other.case"));
-  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
-  test::PosedCase posed(*parsed.value);
-  ASSERT_TRUE(posed.built);
-  posed.centre_on_a();
-  const PosedHull a = posed.a(), b = posed.b();
+  const auto posed = regression_centred_on_a(
+      "f54-two-edge-axes-7-degrees-apart-tie-at-touching-and-the-hint-s-ceiling-picked-the-other.case");
+  ASSERT_TRUE(posed);
+  const PosedHull a = posed->a(), b = posed->b();
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);
-  const SatResult warm = run_sat_with_hint(posed.a(), posed.b(), {cold.kind, cold.feature_a, cold.feature_b});
+  const SatResult warm = run_sat_with_hint(posed->a(), posed->b(), {cold.kind, cold.feature_a, cold.feature_b});
   EXPECT_EQ(warm.feature_a, cold.feature_a);
   EXPECT_EQ(warm.feature_b, cold.feature_b);
   EXPECT_EQ(warm.depth, cold.depth);
@@ -289,13 +298,10 @@ TEST(SatHint, TwoEdgeAxesTiedAtTouchingAnswerAsTheColdCallWithItsAnswerAsTheHint
 // band of rounding. Whichever pair along the axis is the hint, the call
 // answers as the call without one, to the bit.
 TEST(SatHint, ParallelEdgesOfTouchingNeedlesAsTheHintAnswerAsTheColdCall) {
-  const CaseParse parsed = read_case_file(test::corpus_path(
-      "regressions/f56-two-needles-touching-corner-to-corner-1e3-out-a-hint-named-by-another-edge-proved-them-apart.case"));
-  ASSERT_TRUE(parsed.value.has_value()) << parsed.error;
-  test::PosedCase posed(*parsed.value);
-  ASSERT_TRUE(posed.built);
-  posed.centre_on_a();
-  const PosedHull a = posed.a(), b = posed.b();
+  const auto posed = regression_centred_on_a(
+      "f56-two-needles-touching-corner-to-corner-1e3-out-a-hint-named-by-another-edge-proved-them-apart.case");
+  ASSERT_TRUE(posed);
+  const PosedHull a = posed->a(), b = posed->b();
   const SatResult cold = run_sat_with_hint(a, b, AxisHint{});
   ASSERT_FALSE(cold.separated);
   ASSERT_EQ(cold.kind, AxisKind::edge_edge);

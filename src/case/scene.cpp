@@ -53,17 +53,17 @@ SceneBuild make_scene(const CaseFile& c) {
   if (!a.hull) return {std::nullopt, "hull A: " + a.error};
   HullBuild b = hulls.build(c.points_b);
   if (!b.hull) return {std::nullopt, "hull B: " + b.error};
-  for (const Pose* pose : {&c.pose_a, &c.pose_b})
+  for (const Pose* pose : {&c.pose_a, &c.pose_b}) {
     if (!pose->position.allFinite() || !pose->orientation.coeffs().allFinite() ||
         pose->orientation.coeffs().cwiseAbs().maxCoeff() == 0)
       return {std::nullopt, "a pose is not finite or its quaternion is zero"};
-  for (const Pose* pose : {&c.pose_a, &c.pose_b})
     if (const double largest = pose->position.cwiseAbs().maxCoeff(); largest > tol::kLargestCoordinate) {
       char why[120];
       std::snprintf(why, sizeof why, "a pose's position has a coordinate of %.3g, past the limit of %g", largest,
                     tol::kLargestCoordinate);
       return {std::nullopt, why};
     }
+  }
   Scene scene = posed_scene(std::move(*a.hull), c.pose_a, std::move(*b.hull), c.pose_b);
   // Past this the world frame's rounding (64 ulps of the coordinates) exceeds
   // 1e-6 L, every tolerance is mostly rounding, and a wrong normal would pass.

@@ -223,8 +223,9 @@ void keep_outline_and_deepest(ClipPolygon& points, const Plane& reference_plane,
     if (!(reference_plane.signed_distance(points[k]) < 0)) points.erase(k);
   if (points.size() <= MFZ_MAX_CONTACTS) return;
   int deepest = 0;
+  double least = reference_plane.signed_distance(points[0]);
   for (int k = 1; k < points.size(); ++k)
-    if (reference_plane.signed_distance(points[k]) < reference_plane.signed_distance(points[deepest])) deepest = k;
+    if (const double d = reference_plane.signed_distance(points[k]); d < least) least = d, deepest = k;
   const Vec3 deepest_point = points[deepest];
   const bool deepest_crossing = points.is_crossing(deepest);
   keep_outline(points, reference_plane.normal, scratch);

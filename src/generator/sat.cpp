@@ -768,8 +768,8 @@ bool hint_overlap(const PosedHull& a, const PosedHull& b, const AxisHint& hint, 
     // rounding's 2.8e-14: the second call said apart, the first colliding
     // 5.5e-15 deep (F56, deterministic, manifuzz check --strict --family
     // needle).
-    const double turn =
-        tol::world_rounding(reach) * (1 / edge_a.norm() + 1 / edge_b.norm()) * edge_a.norm() * edge_b.norm() / length;
+    // The rounding over each edge's length, over the sine between them:
+    const double turn = tol::world_rounding(reach) * (edge_a.norm() + edge_b.norm()) / length;
     uncertain += 2 * reach * turn;
   }
   bool b_along_axis = true;

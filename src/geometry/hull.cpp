@@ -327,10 +327,11 @@ HullBuild hull_from_facets(const std::vector<Vec3>& points, std::vector<QhullFac
 
 HullBuild build_hull(const std::vector<Vec3>& points) {
   if (points.size() < 4) return {std::nullopt, "fewer than four points (" + std::to_string(points.size()) + ")"};
-  for (const Vec3& p : points)
-    if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
   double largest = 0;
-  for (const Vec3& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  for (const Vec3& p : points) {
+    if (!p.allFinite()) return {std::nullopt, "a point is NaN or infinite"};
+    largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  }
   if (largest > tol::kLargestCoordinate) {
     char why[120];
     std::snprintf(why, sizeof why, "a coordinate of %.3g is past the limit of %g", largest, tol::kLargestCoordinate);
