@@ -113,6 +113,12 @@ std::vector<BenchFamily> bench_families(int pairs) {
     families.push_back(family(std::to_string(points) + "-point hulls", false, pairs, 3 + points,
                               [points](Random& r) { return cloud_pair(r, points, 0.3, 0.9); }));
   families.push_back(family("64-gon cylinders", false, pairs, 4, cylinder_on_cylinder));
+  // The same pairs with every face split into a fan of triangles, as a mesh
+  // exported from a modelling tool arrives: the same contacts, from hulls
+  // whose caps are 62 triangles each.
+  BenchFamily fans{"64-gon cylinders triangulated", false, families.back().scenes};
+  for (Scene& s : fans.scenes) s.hull_a = fan_triangulated(s.hull_a), s.hull_b = fan_triangulated(s.hull_b);
+  families.push_back(std::move(fans));
   families.push_back(family("apart", false, pairs, 5, [](Random& r) { return cloud_pair(r, 32, 1.05, 2); }));
   return families;
 }

@@ -16,7 +16,8 @@ struct BenchFamily {
 
 /// Boxes resting face to face (a small tilt, any yaw), boxes tilted a few
 /// degrees, random hulls of 8, 32 and 128 points on spheres of random radius
-/// overlapping, 64-gon cylinders cap to cap, and 32-point hulls apart (the
+/// overlapping, 64-gon cylinders cap to cap, the same cylinders with their
+/// faces triangulated (fan_triangulated), and 32-point hulls apart (the
 /// early-out); `pairs` each.
 std::vector<BenchFamily> bench_families(int pairs = 1024);
 

@@ -255,21 +255,6 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
 
 // ---- the transformed cases ----
 
-// Every face split into a fan of triangles with the face's normal, as a mesh
-// exported from a modelling tool arrives.
-Hull triangulated(const Hull& h) {
-  std::vector<Vec3> vertices;
-  std::vector<std::vector<int>> loops;
-  std::vector<Vec3> normals;
-  for (int i = 0; i < h.vertex_count(); ++i) vertices.push_back(h.vertex(i));
-  for (int f = 0; f < h.face_count(); ++f)
-    for (int k = 1; k + 1 < h.face_size(f); ++k) {
-      loops.push_back({h.face_vertex(f, 0), h.face_vertex(f, k), h.face_vertex(f, k + 1)});
-      normals.push_back(h.face_normal(f));
-    }
-  return Hull::from_faces(vertices, loops, normals);
-}
-
 // An edge-edge normal is the cross product of two edges taken from world
 // coordinates, so it turns by the world frame's resolution over the shorter
 // edge: a 1e-4 edge 1e6 from the origin points only to within 1e-4 rad.
@@ -420,7 +405,7 @@ std::optional<Finding> vertex_order(const RelationInput& in, GeneratorSession& g
 // definition (its faces are not maximal).
 std::optional<Finding> triangulated_faces(const RelationInput& in, GeneratorSession& g, const Numbers*) {
   if (in.level != Level::strict) return std::nullopt;
-  const Hull a = triangulated(in.scene.hull_a), b = triangulated(in.scene.hull_b);
+  const Hull a = fan_triangulated(in.scene.hull_a), b = fan_triangulated(in.scene.hull_b);
   mfz_manifold out;
   if (auto f = run(g, {&a, in.scene.pose_a, &b, in.scene.pose_b}, out, in, "triangulated-faces"))
     return recorded(f, "triangulated-faces", {});

@@ -540,7 +540,7 @@ TEST(ClippingGenerator, FacesBesideTheReferencePrismArePassedOverWithTheContacts
 // 8-point hulls pressed
 // into it, whose faces beside the incident face reach below the plane by
 // corners of their own or cross the prism's sides.
-Hull fan_triangulated(const Hull& h, double wobble);
+Hull wobbled_fans(const Hull& h, double wobble);
 
 TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheContactsOfClippingThem) {
   const ClippingSteps every_face = every_face_clipped();
@@ -551,7 +551,7 @@ TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheCon
   const mfz_pose pa = Pose{Vec3::Zero(), Quat::Identity()}.to_abi();
   int contacts = 0;
   const Hull box = *build_hull(test::box_points(0.4, 0.3, 0.35)).hull;
-  for (const Hull& above : {box, fan_triangulated(box, 0.0), *build_hull(prism).hull,
+  for (const Hull& above : {box, wobbled_fans(box, 0.0), *build_hull(prism).hull,
                             *build_hull(test::sphere_points(8, 11)).hull, *build_hull(test::sphere_points(8, 23)).hull}) {
     const mfz_hull vb = above.view();
     for (int k = 0; k < 48; ++k) {
@@ -576,7 +576,7 @@ TEST(ClippingGenerator, FacesReachingBelowByHeldCornersAlonePassedOverWithTheCon
 // `wobble` rad about an axis of its own: coplanar patches whose triangles'
 // normals are within tol::kCoplanarSine of some and not of others, so that
 // the patch gathered depends on the triangle it starts from.
-Hull fan_triangulated(const Hull& h, double wobble) {
+Hull wobbled_fans(const Hull& h, double wobble) {
   std::vector<Vec3> vertices;
   std::vector<std::vector<int>> loops;
   std::vector<Vec3> normals;
@@ -609,7 +609,7 @@ TEST(ClippingGenerator, ATriangulatedPatchMetAgainFromAnotherTriangleIsClippedOn
   for (const double wobble : {0.0, 0.8 * tol::kCoplanarSine, 2 * tol::kCoplanarSine}) {
     for (const Hull& whole : {*build_hull(prism).hull, *build_hull(test::box_points(0.1, 0.1, 0.1)).hull,
                               *build_hull(test::sphere_points(48, 7)).hull}) {
-      const Hull b = fan_triangulated(whole, wobble);
+      const Hull b = wobbled_fans(whole, wobble);
       const mfz_hull vb = b.view();
       for (int k = 0; k < 12; ++k) {
         // Half of them astride the slab's edge, whose side plane cuts the

@@ -163,11 +163,12 @@ class ClippedPatches {
   }
   void clear() { count_ = 0; }
   // Kept while there is room; a loop not kept is clipped again when met.
-  void keep(const int* loop, int size) {
-    if (count_ == kLoops || start_[count_] + size > kInts) return;
+  bool keep(const int* loop, int size) {
+    if (count_ == kLoops || start_[count_] + size > kInts) return false;
     std::copy(loop, loop + size, ints_ + start_[count_]);
     start_[count_ + 1] = start_[count_] + size;
     ++count_;
+    return true;
   }
 
  private:
@@ -175,6 +176,39 @@ class ClippedPatches {
   int ints_[kInts];
   int start_[kLoops + 1] = {0};
   int count_ = 0;
+};
+
+// The faces of the patches ClippedPatches holds whose faces all have one
+// normal, to the bit (a face split into triangles as a mesh arrives): met
+// again, such a face is passed by before its patch is gathered. Gathered
+// from any of its faces, the patch is the same faces (each is asked of the
+// same normal), so its loop is the kept one turned, and ClippedPatches
+// would pass it by after the gather. A triangulated 64-gon cap met F27
+// 61 times a call, and each gathered the whole cap again: 64-gon
+// cylinders with triangulated faces spent three quarters of a call there.
+class ClippedPatchFaces {
+ public:
+  bool has(int face) const { return face < kFaces && ((marks_[face / 64] >> (face % 64)) & 1u); }
+  void clear() {
+    if (any_) std::fill(marks_, marks_ + kFaces / 64, uint64_t{0});
+    any_ = false;
+  }
+  // The patch's faces, when they share the first one's normal, and not
+  // past the gather's room (a patch that fills it may gather otherwise
+  // from another face).
+  void mark_if_one_normal(const PosedHull& hull, const int* faces, int count) {
+    if (count >= kMaxPatchFaces) return;
+    const Vec3 normal = hull.world_face_normal(faces[0]);
+    for (int i = 1; i < count; ++i)
+      if (hull.world_face_normal(faces[i]) != normal) return;
+    for (int i = 0; i < count; ++i)
+      if (faces[i] < kFaces) marks_[faces[i] / 64] |= uint64_t{1} << (faces[i] % 64), any_ = true;
+  }
+
+ private:
+  static constexpr int kFaces = 2048;
+  uint64_t marks_[kFaces / 64] = {};
+  bool any_ = false;
 };
 
 // A call's polygons and F27's records, kept per thread and reached once per
@@ -195,7 +229,9 @@ struct ClipWorkspace {
   PrismSides other_sides;
   ClipPolygon scratch;  // the clip's other buffer (ClipFace::scratch)
   ClippedPatches patches;
+  ClippedPatchFaces patch_faces_clipped;
   int corners[kMaxPatchLoop];
+  int patch_faces[kMaxPatchFaces];
   // Their clipped points, each with its height over the reference plane,
   // waiting to be added deepest first.
   std::array<std::pair<double, Vec3>, 2 * kMaxPolygonVertices> below_points;
@@ -289,8 +325,10 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   const bool builtin_clip = steps.face_polygon == coplanar_patch && steps.clip_to_sides == clip_to_reference_prism;
   ClipPolygon& polygon = work.below;
   ClippedPatches& patches = work.patches;
+  ClippedPatchFaces& clipped_faces = work.patch_faces_clipped;
   int* corners = work.corners;
   patches.clear();
+  clipped_faces.clear();
   // A point in a column that a point already added stands in adds nothing
   // to the region's span, and is left out. Every face's points wait, and
   // the column test takes them deepest first (lower coordinates first
@@ -335,15 +373,15 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
     bool reaches_below = false;
     for (int k = 0; k < incident.face_size(f) && !reaches_below; ++k)
       reaches_below = reference_plane.signed_distance(incident.world_face_point(f, k)) < 0;
-    if (!reaches_below) continue;
+    if (!reaches_below || clipped_faces.has(f)) continue;
     if (builtin_clip && lone_face_clips_to_nothing(incident, f, reference)) continue;
     if (builtin_clip && lone_face_adds_nothing(incident, f, reference, reference_plane, clipped)) continue;
     if (builtin_clip) {
       int members = 0;
-      const int size = patch_loop(incident, f, corners, members);
+      const int size = patch_loop(incident, f, corners, members, work.patch_faces);
       if (members > 1 && size > 0) {
         if (patches.holds(corners, size)) continue;
-        patches.keep(corners, size);
+        if (patches.keep(corners, size)) clipped_faces.mark_if_one_normal(incident, work.patch_faces, members);
       }
       loop_points(incident, corners, size, polygon);
     } else {

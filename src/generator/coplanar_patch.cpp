@@ -11,8 +11,7 @@ namespace mfz {
 
 namespace {
 
-/// Fixed capacity of a coplanar patch: faces, and boundary edges.
-constexpr int kMaxPatchFaces = 256;
+/// Fixed capacity of a coplanar patch's boundary edges.
 constexpr int kMaxPatchEdges = kMaxPatchLoop;
 
 // The faces of a patch, in the order gathered, with a mark per face for
@@ -70,6 +69,10 @@ bool has_coplanar_neighbour(const PosedHull& hull, int face) {
 // for each patch, were most of a lone face's cost, and patches were 6% of
 // a box pair's call.
 int patch_loop(const PosedHull& hull, int face, int* loop, int& members) {
+  return patch_loop(hull, face, loop, members, nullptr);
+}
+
+int patch_loop(const PosedHull& hull, int face, int* loop, int& members, int* faces) {
   const auto own_loop = [&] {
     const int n = std::min(hull.face_size(face), kMaxPatchEdges);
     for (int k = 0; k < n; ++k) loop[k] = hull.face_vertex(face, k);
@@ -81,6 +84,8 @@ int patch_loop(const PosedHull& hull, int face, int* loop, int& members) {
   gather_patch(hull, face, member);
   members = member.size();
   if (members == 1) return own_loop();
+  if (faces)
+    for (int i = 0; i < members; ++i) faces[i] = member[i];
   // The patch's boundary: the loop steps whose other side is outside it.
   int from[kMaxPatchEdges], to[kMaxPatchEdges], edges = 0;
   for (int i = 0; i < members; ++i) {

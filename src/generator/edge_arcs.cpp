@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <limits>
 
 #include "geometry/vector_lanes.h"
 
@@ -27,6 +28,20 @@ void pad_to_lanes(ArcColumns& c, int count) {
     c.across_x[i] = c.across_y[i] = c.across_z[i] = 0;
     c.v0_x[i] = c.v0_y[i] = c.v0_z[i] = 0;
   }
+}
+
+// Whether any of the first `count` arcs' circle normals is short enough
+// for is_flat_arc to ask further: the least square in vector lanes, apart
+// from the loop that writes the columns (folded into it, the test cost
+// 128-point pairs 2.8% more instructions; apart and in plain lanes, 0.9%).
+MFZ_VECTOR_LANES bool any_flat_circle(const ArcColumns& c, int count) {
+  double least = std::numeric_limits<double>::infinity();
+#pragma omp simd reduction(min : least)
+  for (int i = 0; i < count; ++i) {
+    const double square = (c.across_x[i] * c.across_x[i] + c.across_y[i] * c.across_y[i]) + c.across_z[i] * c.across_z[i];
+    least = square < least ? square : least;
+  }
+  return least <= kFlatArcRoom;
 }
 
 }  // namespace
@@ -75,6 +90,7 @@ void EdgeArcs::write_columns(const PosedHull& hull) {
     c.across_x[i] = across.x(), c.across_y[i] = across.y(), c.across_z[i] = across.z();
     c.v0_x[i] = v.x(), c.v0_y[i] = v.y(), c.v0_z[i] = v.z();
   }
+  may_have_flat_ = any_flat_circle(c, count_);
   pad_to_lanes(c, count_);
 }
 

@@ -76,6 +76,12 @@ class EdgeArcs {
   /// whole arc (64-gon cylinders, whose rows let through many, took 1.06x
   /// the time when each was gathered).
   bool may_cross(const EdgeArc& arc_a, int j) const;
+  /// Whether arc j lies between coplanar faces (is_flat_arc), read from the
+  /// columns.
+  bool is_flat(int j) const;
+  /// False when no arc can be flat: a hull of merged faces (Qhull's) has
+  /// none, and its pairs are not asked.
+  bool may_have_flat() const { return may_have_flat_; }
   /// The arcs as columns: the only copy of their ends, circles and first
   /// vertices. Each arc was kept as a struct as well, and the columns were
   /// filled from the structs: a 128-point pair's call wrote 138 KB of arcs,
@@ -98,6 +104,7 @@ class EdgeArcs {
   ArcColumns columns_;
   int count_ = 0;
   bool complete_ = false;
+  bool may_have_flat_ = false;
 };
 
 /// Of the arcs in `all` (the first `count`), those whose `left_out` is
@@ -133,6 +140,24 @@ inline bool may_span_minkowski_face(const EdgeArc& edge_a, const Vec3& b_face, c
 
 inline bool may_span_minkowski_face(const EdgeArc& edge_a, const EdgeArc& edge_b) {
   return may_span_minkowski_face(edge_a, edge_b.n_face, edge_b.n_twin, edge_b.across);
+}
+
+/// F4: an arc between coplanar faces (coplanar_normals of its ends), such as
+/// a triangulated face's diagonal, spans no axis. Its circle's normal is the
+/// cross product of the same ends: only where twice the coplanar sine bounds
+/// it is the test itself asked, so that an arc across a fold costs three
+/// products.
+inline constexpr double kFlatArcRoom = 4 * tol::kCoplanarSine * tol::kCoplanarSine;
+inline bool is_flat_arc(const Vec3& n_face, const Vec3& n_twin, const Vec3& across) {
+  return across.squaredNorm() <= kFlatArcRoom && coplanar_normals(n_face, n_twin);
+}
+
+inline bool is_flat_arc(const EdgeArc& arc) { return is_flat_arc(arc.n_face, arc.n_twin, arc.across); }
+
+inline bool EdgeArcs::is_flat(int j) const {
+  const ArcColumns& c = columns_;
+  return is_flat_arc(Vec3(c.face_x[j], c.face_y[j], c.face_z[j]), Vec3(c.twin_x[j], c.twin_y[j], c.twin_z[j]),
+                     Vec3(c.across_x[j], c.across_y[j], c.across_z[j]));
 }
 
 inline bool EdgeArcs::may_cross(const EdgeArc& arc_a, int j) const {

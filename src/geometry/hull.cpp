@@ -383,4 +383,17 @@ std::string validate_hull(const Hull& hull) {
   return {};
 }
 
+Hull fan_triangulated(const Hull& hull) {
+  std::vector<Vec3> vertices;
+  std::vector<std::vector<int>> loops;
+  std::vector<Vec3> normals;
+  for (int i = 0; i < hull.vertex_count(); ++i) vertices.push_back(hull.vertex(i));
+  for (int f = 0; f < hull.face_count(); ++f)
+    for (int k = 1; k + 1 < hull.face_size(f); ++k) {
+      loops.push_back({hull.face_vertex(f, 0), hull.face_vertex(f, k), hull.face_vertex(f, k + 1)});
+      normals.push_back(hull.face_normal(f));
+    }
+  return Hull::from_faces(std::move(vertices), std::move(loops), std::move(normals));
+}
+
 }  // namespace mfz

@@ -106,4 +106,10 @@ HullBuild build_hull(const std::vector<Vec3>& points);
 /// normals); else the first problem found.
 std::string validate_hull(const Hull& hull);
 
+/// Every face split into a fan of triangles from its first corner, each with
+/// the face's own normal, as a mesh exported from a modelling tool arrives:
+/// the diagonals lie between coplanar faces (the triangulated-faces
+/// relation, and the generator's flat edges).
+Hull fan_triangulated(const Hull& hull);
+
 }  // namespace mfz
