@@ -659,12 +659,12 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // F4 before any pair is formed: consider_projected_pair passes by every
   // pair with an arc between coplanar faces (is_flat_pair), so such an
   // arc's row is left out here, and B's are kept out of the rows (below),
-  // to the same answer. Kept in, every diagonal of one hull's triangulated faces met
-  // every diagonal of the other's, an arc of one point crossing another
-  // within the Gauss test's slack: 64-gon cylinders with triangulated
-  // faces took 35.4M instructions a call, 26 times the 1.35M of their
-  // merged faces, and the triangulated-faces relation was a quarter of a
-  // strict fuzz execution on a grown corpus.
+  // to the same answer. Kept in, every diagonal of one hull's triangulated
+  // faces met every diagonal of the other's, an arc of one point crossing
+  // another within the Gauss test's slack: 64-gon cylinders with
+  // triangulated faces took 35.4M instructions a call, 26 times the 1.35M
+  // of their merged faces, and the triangulated-faces relation was a
+  // quarter of a strict fuzz execution on a grown corpus.
   const bool flat_a = arcs_a.may_have_flat(), flat_b = arcs_b.may_have_flat();
   const auto against = [&](int i, const EdgeArc& x, const int* js, int count) {
     if (flat_a && is_flat_arc(x)) return true;
