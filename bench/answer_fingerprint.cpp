@@ -124,7 +124,8 @@ bool write_call(const std::string& folder, const std::string& family, size_t pai
                          (swapped ? " (B, A)" : ""));
   // A case file holds points: its hulls are built with merged faces.
   if (family.find("triangulated") != std::string::npos)
-    c.extensions.push_back("note the call's faces were triangulated; replay --strict runs them so (triangulated-faces)");
+    c.extensions.push_back("note the call's faces were triangulated: replay --strict runs them so too "
+                           "(triangulated-faces)");
   std::string name = family + "-" + std::to_string(pair) + (swapped ? "-swapped" : "") + ".case", error;
   std::replace(name.begin(), name.end(), ' ', '-');
   if (write_case_file(folder + "/" + name, c, error)) return true;

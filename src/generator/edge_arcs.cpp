@@ -38,7 +38,8 @@ MFZ_VECTOR_LANES bool any_flat_circle(const ArcColumns& c, int count) {
   double least = std::numeric_limits<double>::infinity();
 #pragma omp simd reduction(min : least)
   for (int i = 0; i < count; ++i) {
-    const double square = (c.across_x[i] * c.across_x[i] + c.across_y[i] * c.across_y[i]) + c.across_z[i] * c.across_z[i];
+    const double x = c.across_x[i], y = c.across_y[i], z = c.across_z[i];
+    const double square = (x * x + y * y) + z * z;
     least = square < least ? square : least;
   }
   return least <= kFlatArcRoom;
