@@ -68,10 +68,6 @@ bool has_coplanar_neighbour(const PosedHull& hull, int face) {
 // its own loop, found without the patch's members: their marks, cleared
 // for each patch, were most of a lone face's cost, and patches were 6% of
 // a box pair's call.
-int patch_loop(const PosedHull& hull, int face, int* loop, int& members) {
-  return patch_loop(hull, face, loop, members, nullptr);
-}
-
 int patch_loop(const PosedHull& hull, int face, int* loop, int& members, int* faces) {
   const auto own_loop = [&] {
     const int n = std::min(hull.face_size(face), kMaxPatchEdges);

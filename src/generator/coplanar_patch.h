@@ -14,13 +14,11 @@ void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out);
 inline constexpr int kMaxPatchLoop = 512;
 /// The same loop as the hull's vertex indices, in coplanar_patch's order:
 /// writes at most kMaxPatchLoop to `loop` and returns how many, and in
-/// `members` how many faces the patch holds.
-int patch_loop(const PosedHull& hull, int face, int* loop, int& members);
+/// `members` how many faces the patch holds; with `faces` (room for
+/// kMaxPatchFaces), the patch's faces where it holds more than one.
+int patch_loop(const PosedHull& hull, int face, int* loop, int& members, int* faces = nullptr);
 /// The most faces a patch gathers; a patch that reaches it may hold more.
 inline constexpr int kMaxPatchFaces = 256;
-/// patch_loop, with the patch's faces written to `faces` (room for
-/// kMaxPatchFaces) where it holds more than one.
-int patch_loop(const PosedHull& hull, int face, int* loop, int& members, int* faces);
 /// The world points of a loop of vertex indices, in its order.
 void loop_points(const PosedHull& hull, const int* loop, int size, ClipPolygon& out);
 /// The patch's area (the same whether the face arrived whole or triangulated).
