@@ -50,13 +50,15 @@ MFZ_VECTOR_LANES bool any_flat_circle(const ArcColumns& c, int count) {
 void EdgeArcs::build(const PosedHull& hull) {
   count_ = 0;
   complete_ = false;
-  if (hull.vertex_count() > kCachedVertices) return;
+  if (hull.vertex_count() > kTopologyMaxVertices) return;
+  if (!storage_) storage_ = std::make_unique<Storage>();
+  ArcIndices* indices = storage_->indices;
   // The twins are known already for a hull whose topology is kept.
   if (const HullTopology* topology = hull.topology()) {
     count_ = topology->edge_count();
     for (int e = 0; e < count_; ++e) {
       const TopologyEdge& edge = topology->edge(e);
-      indices_[e] = {edge.v0, edge.v1, edge.face, edge.twin};
+      indices[e] = {edge.v0, edge.v1, edge.face, edge.twin};
     }
   } else {
     for (int f = 0; f < hull.face_count(); ++f) {
@@ -65,7 +67,7 @@ void EdgeArcs::build(const PosedHull& hull) {
         const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
         if (v0 >= v1) continue;
         if (count_ == kMaxArcs) return;
-        indices_[count_++] = {v0, v1, f, -1};
+        indices[count_++] = {v0, v1, f, -1};
       }
     }
     if (!pair_twins(hull)) return;
@@ -81,9 +83,9 @@ void EdgeArcs::build(const PosedHull& hull) {
 // instructions (a 128-point call builds 756).
 void EdgeArcs::write_columns(const PosedHull& hull) {
   hull.turn_face_normals();
-  ArcColumns& c = columns_;
+  ArcColumns& c = storage_->columns;
   for (int i = 0; i < count_; ++i) {
-    const ArcIndices& at = indices_[i];
+    const ArcIndices& at = storage_->indices[i];
     const Vec3 n_face = hull.world_face_normal(at.face), n_twin = hull.world_face_normal(at.twin);
     const Vec3 v = hull.world_vertex(at.v0), across = n_twin.cross(n_face);
     c.face_x[i] = n_face.x(), c.face_y[i] = n_face.y(), c.face_z[i] = n_face.z();
@@ -108,48 +110,69 @@ namespace {
 // lanes' doubles. Built for AVX2 and for any x86-64; file-local, as
 // vector_lanes.h asks.
 // Whole fours: with a scalar tail after the lanes, an 8-point hull's 18
-// arcs took 280 instructions a row.
-MFZ_VECTOR_LANES void crossing_flags(const ArcColumns& k, int count, const EdgeArc& arc_a, double limit,
+// arcs took 280 instructions a row. The `count` arcs from `begin`, arc
+// begin + j's flag in flags[j].
+MFZ_VECTOR_LANES void crossing_flags(const ArcColumns& k, int begin, int count, const EdgeArc& arc_a, double limit,
                                      int64_t* flags) {
   const int lanes = lanes_of(count);
   if (lanes % kArcLanes != 0) __builtin_unreachable();
   const double ax = arc_a.across.x(), ay = arc_a.across.y(), az = arc_a.across.z();
   const double px = arc_a.n_face.x(), py = arc_a.n_face.y(), pz = arc_a.n_face.z();
   const double qx = arc_a.n_twin.x(), qy = arc_a.n_twin.y(), qz = arc_a.n_twin.z();
+  const double *fx = k.face_x + begin, *fy = k.face_y + begin, *fz = k.face_z + begin;
+  const double *tx = k.twin_x + begin, *ty = k.twin_y + begin, *tz = k.twin_z + begin;
+  const double *cx = k.across_x + begin, *cy = k.across_y + begin, *cz = k.across_z + begin;
 #pragma omp simd
   for (int j = 0; j < lanes; ++j) {
-    const double c = k.face_x[j] * ax + k.face_y[j] * ay + k.face_z[j] * az;
-    const double d = k.twin_x[j] * ax + k.twin_y[j] * ay + k.twin_z[j] * az;
-    const double a = k.across_x[j] * px + k.across_y[j] * py + k.across_z[j] * pz;
-    const double b = k.across_x[j] * qx + k.across_y[j] * qy + k.across_z[j] * qz;
+    const double c = fx[j] * ax + fy[j] * ay + fz[j] * az;
+    const double d = tx[j] * ax + ty[j] * ay + tz[j] * az;
+    const double a = cx[j] * px + cy[j] * py + cz[j] * pz;
+    const double b = cx[j] * qx + cy[j] * qy + cz[j] * qz;
     flags[j] = std::max(std::max(c * d, a * b), c * b) < limit;
   }
 }
 
-// The flags of crossing_flags, gathered into indices: of B's own arcs
-// (`index` null), or of those keep_arcs kept.
-int gather_crossing(const ArcColumns& columns, int count, const int* index, const EdgeArc& arc_a, int* out) {
+// The flags of crossing_flags, gathered into indices, for the `arcs` arcs
+// from `begin` (a whole four): of B's own arcs (`index` null), or of those
+// keep_arcs kept (`index` from `begin`). At most kStretch arcs, so that
+// the flags stay a kilobyte on the stack whatever the hull's size.
+constexpr int kStretch = 128;
+[[gnu::always_inline]] inline int gather_stretch(const ArcColumns& columns, int begin, int arcs, const int* index, const EdgeArc& arc_a,
+                          int* out) {
   // The ends are unit vectors and so is |across| at most: each dot product
   // is within a few ulps of the test's own, and so is their product.
   constexpr double kLaneRounding = 1e-13;
-  int64_t flags[kMaxArcs + 4];
-  crossing_flags(columns, count, arc_a, tol::kGaussArcSlack + kLaneRounding, flags);
-  std::fill(flags + count, flags + count + kArcLanes, 0);  // the padding's lanes too
+  int64_t flags[kStretch + kArcLanes];
+  crossing_flags(columns, begin, arcs, arc_a, tol::kGaussArcSlack + kLaneRounding, flags);
+  std::fill(flags + arcs, flags + arcs + kArcLanes, 0);  // the padding's lanes too
   // Four arcs at a time: a row crosses a few of B's arcs, so most fours
   // have none. Taking every arc in turn, without a branch, was half the
   // test's time on 32-point hulls.
   int found = 0;
-  for (int block = 0; block < count; block += 4) {
+  for (int block = 0; block < arcs; block += 4) {
     if ((flags[block] | flags[block + 1] | flags[block + 2] | flags[block + 3]) == 0) continue;
-    for (int j = block; j < block + 4; ++j) out[found] = index ? index[j] : j, found += static_cast<int>(flags[j]);
+    for (int j = block; j < block + 4; ++j) out[found] = index ? index[j] : begin + j, found += static_cast<int>(flags[j]);
   }
+  return found;
+}
+
+// gather_stretch over all `count` arcs. Hulls of up to 44 vertices have
+// at most kStretch arcs and take one stretch, in the code they took before
+// larger hulls had arcs (a loop over stretches cost 8-point hulls 2.8%
+// more instructions).
+int gather_crossing(const ArcColumns& columns, int count, const int* index, const EdgeArc& arc_a, int* out) {
+  if (count <= kStretch) return gather_stretch(columns, 0, count, index, arc_a, out);
+  int found = 0;
+  for (int begin = 0; begin < count; begin += kStretch)
+    found += gather_stretch(columns, begin, std::min(kStretch, count - begin), index ? index + begin : nullptr, arc_a,
+                            out + found);
   return found;
 }
 
 }  // namespace
 
 int EdgeArcs::crossing(const EdgeArc& arc_a, int* out) const {
-  return gather_crossing(columns_, count_, nullptr, arc_a, out);
+  return gather_crossing(storage_->columns, count_, nullptr, arc_a, out);
 }
 
 int crossing_among(const ArcColumns& kept, int count, const int* index, const EdgeArc& arc_a, int* out) {
@@ -172,7 +195,10 @@ int keep_arcs(const ArcColumns& all, int count, const bool* left_out, ArcColumns
 
 // Sorting the twin steps pairs every edge with its other face in E log E.
 bool EdgeArcs::pair_twins(const PosedHull& hull) {
-  TwinStep twins[kMaxArcs];
+  // Only hulls without a topology come here (malformed loops, or more
+  // vertices than a topology takes): the steps of a 128-point hull fit.
+  constexpr int kTwinSteps = 3 * kCachedVertices;
+  TwinStep twins[kTwinSteps];
   int twin_count = 0;
   const int vertices = hull.vertex_count();
   for (int f = 0; f < hull.face_count(); ++f) {
@@ -180,18 +206,18 @@ bool EdgeArcs::pair_twins(const PosedHull& hull) {
     for (int k = 0; k < n; ++k) {
       const int v0 = hull.face_vertex(f, k), v1 = hull.face_vertex(f, (k + 1) % n);
       if (v0 <= v1) continue;
-      if (twin_count == kMaxArcs) return false;
+      if (twin_count == kTwinSteps) return false;
       twins[twin_count++] = {edge_key(v1, v0, vertices), f};
     }
   }
   if (twin_count != count_) return false;
   std::sort(twins, twins + twin_count, [](const TwinStep& x, const TwinStep& y) { return x.key < y.key; });
   for (int i = 0; i < count_; ++i) {
-    const long long key = edge_key(indices_[i].v0, indices_[i].v1, vertices);
+    const long long key = edge_key(storage_->indices[i].v0, storage_->indices[i].v1, vertices);
     const TwinStep* found = std::lower_bound(twins, twins + twin_count, key,
                                              [](const TwinStep& t, long long k) { return t.key < k; });
     if (found == twins + twin_count || found->key != key) return false;
-    indices_[i].twin = found->face;
+    storage_->indices[i].twin = found->face;
   }
   return true;
 }

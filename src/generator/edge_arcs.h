@@ -8,15 +8,25 @@
 /// between Convex Polyhedra", GDC 2013). Pruning the other pairs turns SAT's
 /// E_A x E_B projections into a handful.
 ///
-/// Built on the stack, so a generator call still allocates nothing; a hull
-/// too large for the arrays, or one whose edges do not pair up, reports
+/// Built into arrays an object allocates once, on its first build (SAT keeps
+/// two per thread), so a generator call still allocates nothing; a hull too
+/// large for the arrays, or one whose edges do not pair up, reports
 /// `complete() == false` and SAT then tries every pair as the tutorial does.
+#include <memory>
+
 #include "geometry/posed_hull.h"
 
 namespace mfz {
 
-/// Every polyhedron with V vertices has at most 3V - 6 edges.
-inline constexpr int kMaxArcs = 3 * kCachedVertices;
+/// Every polyhedron with V vertices has at most 3V - 6 edges: the arcs of
+/// any hull that has a topology (hull_topology.h).
+inline constexpr int kMaxArcs = 3 * kTopologyMaxVertices;
+
+/// A column's length: kMaxArcs and one cache line more, so that the twelve
+/// columns do not all start at one offset modulo 4 KB (kMaxArcs doubles are
+/// six pages), where a small hull's arcs, at the head of each column, would
+/// compete for one set of the cache.
+inline constexpr int kArcColumnLength = kMaxArcs + 8;
 
 /// An arc's vertices and faces: what a pair's own tests read besides the
 /// arcs' ends and circles.
@@ -40,11 +50,12 @@ inline constexpr int lanes_of(int count) { return (count + kArcLanes - 1) / kArc
 /// for loops over every arc at once in vector lanes. Past the last arc, up
 /// to the next whole four (lanes_of), every column holds zeros, so that
 /// such a loop needs no scalar tail; what those lanes give is thrown away.
+/// 296 KB: kept off the stack (SAT keeps its in a workspace per thread).
 struct ArcColumns {
-  double face_x[kMaxArcs], face_y[kMaxArcs], face_z[kMaxArcs];  ///< n_face
-  double twin_x[kMaxArcs], twin_y[kMaxArcs], twin_z[kMaxArcs];  ///< n_twin
-  double across_x[kMaxArcs], across_y[kMaxArcs], across_z[kMaxArcs];  ///< across
-  double v0_x[kMaxArcs], v0_y[kMaxArcs], v0_z[kMaxArcs];        ///< world v0
+  double face_x[kArcColumnLength], face_y[kArcColumnLength], face_z[kArcColumnLength];        ///< n_face
+  double twin_x[kArcColumnLength], twin_y[kArcColumnLength], twin_z[kArcColumnLength];        ///< n_twin
+  double across_x[kArcColumnLength], across_y[kArcColumnLength], across_z[kArcColumnLength];  ///< across
+  double v0_x[kArcColumnLength], v0_y[kArcColumnLength], v0_z[kArcColumnLength];              ///< world v0
 };
 
 class EdgeArcs {
@@ -59,8 +70,8 @@ class EdgeArcs {
   int size() const { return count_; }
   /// Arc i, gathered from the columns and the vertex and face indices.
   EdgeArc operator[](int i) const {
-    const ArcColumns& c = columns_;
-    const ArcIndices& at = indices_[i];
+    const ArcColumns& c = storage_->columns;
+    const ArcIndices& at = storage_->indices[i];
     return {at.v0,
             at.v1,
             at.face,
@@ -70,7 +81,7 @@ class EdgeArcs {
             Vec3(c.across_x[i], c.across_y[i], c.across_z[i])};
   }
   /// Arc i's vertices and faces alone.
-  const ArcIndices& indices(int i) const { return indices_[i]; }
+  const ArcIndices& indices(int i) const { return storage_->indices[i]; }
   /// may_span_minkowski_face of A's arc and arc j of these, read from the
   /// columns: a pair the lanes let through is tested without gathering the
   /// whole arc (64-gon cylinders, whose rows let through many, took 1.06x
@@ -87,7 +98,7 @@ class EdgeArcs {
   /// filled from the structs: a 128-point pair's call wrote 138 KB of arcs,
   /// and building and filling took 16% of its time. Only while the hull
   /// built from is alive.
-  const ArcColumns& columns() const { return columns_; }
+  const ArcColumns& columns() const { return storage_->columns; }
 
   /// The arcs (of B) that may cross `arc_a` (an arc of A's):
   /// may_span_minkowski_face's three tests, for every arc at once, in
@@ -100,8 +111,11 @@ class EdgeArcs {
   bool pair_twins(const PosedHull& hull);
   void write_columns(const PosedHull& hull);
 
-  ArcIndices indices_[kMaxArcs];
-  ArcColumns columns_;
+  struct Storage {
+    ArcIndices indices[kMaxArcs];
+    ArcColumns columns;
+  };
+  std::unique_ptr<Storage> storage_;  ///< allocated by the first build
   int count_ = 0;
   bool complete_ = false;
   bool may_have_flat_ = false;
@@ -155,13 +169,13 @@ inline bool is_flat_arc(const Vec3& n_face, const Vec3& n_twin, const Vec3& acro
 inline bool is_flat_arc(const EdgeArc& arc) { return is_flat_arc(arc.n_face, arc.n_twin, arc.across); }
 
 inline bool EdgeArcs::is_flat(int j) const {
-  const ArcColumns& c = columns_;
+  const ArcColumns& c = storage_->columns;
   return is_flat_arc(Vec3(c.face_x[j], c.face_y[j], c.face_z[j]), Vec3(c.twin_x[j], c.twin_y[j], c.twin_z[j]),
                      Vec3(c.across_x[j], c.across_y[j], c.across_z[j]));
 }
 
 inline bool EdgeArcs::may_cross(const EdgeArc& arc_a, int j) const {
-  const ArcColumns& c = columns_;
+  const ArcColumns& c = storage_->columns;
   return may_span_minkowski_face(arc_a, Vec3(c.face_x[j], c.face_y[j], c.face_z[j]),
                                  Vec3(c.twin_x[j], c.twin_y[j], c.twin_z[j]),
                                  Vec3(c.across_x[j], c.across_y[j], c.across_z[j]));

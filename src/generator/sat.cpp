@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 
 #include "generator/coplanar_patch.h"
 #include "generator/arc_bounds.h"
@@ -381,23 +382,30 @@ int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
                                                   : hull.support_vertex(direction);
 }
 
-// What SAT's edge phase keeps off the call's stack (the arcs about 43 KB
-// each, sized for 128-point hulls): one per thread, as a call runs to its
-// end before the thread makes another. Looked up once per call and held by
-// reference: each use of a thread-local object inside SAT's lambdas looked
-// its address up again, and those lookups were 1.7% of a 32-point call's
-// instructions.
+// What SAT's edge phase keeps off the call's stack (the arcs, rows and
+// margins, sized for hulls of 1,024 vertices: about 1.1 MB): one per
+// thread, allocated on the thread's first call, as a call runs to its end
+// before the thread makes another. Allocated, not a thread-local object
+// itself, so that a thread that never calls the generator carries none of
+// it. Looked up once per call and held by reference: each use of a
+// thread-local object inside SAT's lambdas looked its address up again,
+// and those lookups were 1.7% of a 32-point call's instructions.
 struct SatWorkspace {
   EdgeArcs arcs_a, arcs_b;
   EdgePairBatch batch;
   ArcColumns kept_b;  ///< B's arcs the row bounds leave in
   int kept_index[kMaxArcs];
+  int near[kMaxArcs];            ///< a row's crossing arcs
+  bool left_out[kMaxArcs];       ///< B's arcs left out of every row
+  double row_margin[kMaxArcs];   ///< arcs_above of A's arcs
+  double out_margin[kMaxArcs];   ///< and of B's
   AxisSupport support;  ///< what an edge axis was named by
 };
 
 [[gnu::noinline]] SatWorkspace& sat_workspace() {
-  static thread_local SatWorkspace work;
-  return work;
+  static thread_local std::unique_ptr<SatWorkspace> work;
+  if (!work) work = std::make_unique<SatWorkspace>();
+  return *work;
 }
 
 // One hull projected onto every face normal of another, in vector lanes
@@ -689,10 +697,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     }
     return true;
   };
-  int near[kMaxArcs];
+  int* near = work.near;
   ArcColumns& kept_b = work.kept_b;
   int* kept_index = work.kept_index;
-  bool left_out[kMaxArcs];
+  bool* left_out = work.left_out;
   if (!row_bounds) {
     // Each arc of A against the arcs of B that may cross it, found for the
     // whole row in vector lanes: the pair loop was most of a small hull's
@@ -721,7 +729,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // found later does not tighten the rows after it, which costs less than
   // bounding each row in turn did (a fifth of a 128-point call).
   const double past = std::min(best.depth, ceiling) + tie_room;
-  double row_margin[kMaxArcs];
+  double* row_margin = work.row_margin;
   arcs_above(arcs_a, sb.centre, past - sb.inner, centres, past - sa.inner - sb.inner, row_margin);
   // B's arcs bounded the same way, each over its arc negated (where -m
   // meets it, B's edge is B's support along -m): an arc whose every pair
@@ -731,7 +739,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // pass over them costs less than a grid on the Gauss sphere offering
   // each row the arcs in the cells it passes (128-point hulls took 1.24x
   // the time with the grid, 64-gon cylinders 1.08x).
-  double out_margin[kMaxArcs];
+  double* out_margin = work.out_margin;
   arcs_above(arcs_b, sa.centre, past - sa.inner, -centres, past - sa.inner - sb.inner, out_margin);
   for (int j = 0; j < arcs_b.size(); ++j) left_out[j] = out_margin[j] > 0;
   if (flat_b)

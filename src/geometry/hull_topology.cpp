@@ -57,6 +57,16 @@ constexpr size_t kLargestEntry =
      kAlignment - 1) / kAlignment * kAlignment;
 static_assert(kTopologyStoreBytes >= 64 * kLargestEntry, "the ring must hold many of the largest topologies");
 
+// What a build works in besides the ring: the steps bucketed by their first
+// vertex, and counts per vertex. Sized for the largest hull, 113 KB, so
+// kept with the store, reserved with it, not on the call's stack.
+struct BuildScratch {
+  int step_end[kTopologyMaxSteps], step_face[kTopologyMaxSteps];
+  int bucket_end[kTopologyMaxSteps], bucket_face[kTopologyMaxSteps];
+  int bucket_offsets[kTopologyMaxVertices + 1], fill[kTopologyMaxVertices];
+  int degree[kTopologyMaxVertices + 1], filled[kTopologyMaxVertices];
+};
+
 // Zones of a cube's loops: an edge's zone holds the edge opposite it in
 // each of its two faces, and theirs in turn. Twelve edges in three zones of
 // four, or the loops are not a cube's and `zones` starts with -1.
@@ -145,6 +155,7 @@ class TopologyStore {
   void reserve() {
     arena_.reset(new std::byte[kTopologyStoreBytes]);  // not value-initialised: pages touched as used
     index_.reset(new Entry[kSets * kWays]());
+    scratch_.reset(new BuildScratch);
   }
   HullTopology* at(const Entry& e) const { return reinterpret_cast<HullTopology*>(arena_.get() + e.offset); }
   bool alive(const Entry& e) const { return e.lap == lap_ || (e.lap + 1 == lap_ && e.offset >= head_); }
@@ -189,6 +200,7 @@ class TopologyStore {
 
   std::unique_ptr<std::byte[]> arena_;
   std::unique_ptr<Entry[]> index_;
+  std::unique_ptr<BuildScratch> scratch_;
   Entry* recent_[2] = {nullptr, nullptr};  ///< the entries last returned, newest first
   size_t head_ = 0;
   uint64_t lap_ = 1;
@@ -221,8 +233,11 @@ const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, En
   std::memcpy(loops, hull.face_vertices, sizeof(int32_t) * steps);
   // Steps bucketed by their first vertex (a counting sort, linear): the
   // twin of v0 -> v1 is the step in v1's bucket that ends at v0.
-  int step_end[kTopologyMaxSteps], step_face[kTopologyMaxSteps];
-  int bucket_offsets[kTopologyMaxVertices + 1] = {};
+  BuildScratch& s = *scratch_;
+  int* step_end = s.step_end;
+  int* step_face = s.step_face;
+  int* bucket_offsets = s.bucket_offsets;
+  std::fill(bucket_offsets, bucket_offsets + vertices + 1, 0);
   for (int f = 0; f < faces; ++f) {
     const int begin = offsets[f], end = offsets[f + 1];
     for (int i = begin; i < end; ++i) {
@@ -233,8 +248,9 @@ const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, En
     }
   }
   for (int v = 0; v < vertices; ++v) bucket_offsets[v + 1] += bucket_offsets[v];
-  int bucket_end[kTopologyMaxSteps], bucket_face[kTopologyMaxSteps];
-  int fill[kTopologyMaxVertices];
+  int* bucket_end = s.bucket_end;
+  int* bucket_face = s.bucket_face;
+  int* fill = s.fill;
   std::copy(bucket_offsets, bucket_offsets + vertices, fill);
   for (int i = 0; i < steps; ++i) {
     const int at = fill[loops[i]]++;
@@ -253,7 +269,8 @@ const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, En
     if (twins != 1) return nullptr;  // open, or an edge in more than two faces
   }
   // Edges in SAT's order, and each vertex's neighbours.
-  int degree[kTopologyMaxVertices + 1] = {};
+  int* degree = s.degree;
+  std::fill(degree, degree + vertices + 1, 0);
   int edge_count = 0;
   for (int f = 0; f < faces; ++f) {
     const int begin = offsets[f], n = offsets[f + 1] - begin;
@@ -268,7 +285,8 @@ const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, En
   if (edge_count != t->edge_count_) return nullptr;
   neighbour_offsets[0] = 0;
   for (int v = 0; v < vertices; ++v) neighbour_offsets[v + 1] = neighbour_offsets[v] + degree[v];
-  int filled[kTopologyMaxVertices] = {};
+  int* filled = s.filled;
+  std::fill(filled, filled + vertices, 0);
   for (int e = 0; e < edge_count; ++e) {
     const TopologyEdge& edge = edges[e];
     neighbours[neighbour_offsets[edge.v0] + filled[edge.v0]++] = edge.v1;

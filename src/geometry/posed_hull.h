@@ -29,8 +29,12 @@ inline bool coplanar_normals(const Vec3& n1, const Vec3& n2) {
 
 /// World vertices are cached on the stack for hulls up to this size (larger
 /// hulls are rotated on demand), so SAT's projections are plain dot
-/// products; such hulls also get their topology (hull_topology.h).
-inline constexpr int kCachedVertices = kTopologyMaxVertices;
+/// products; so are the world face normals of hulls of up to kCachedFaces
+/// faces. The stack holds a call's two posed hulls, 12 KB each: a hull of
+/// more vertices, up to kTopologyMaxVertices, still gets its topology
+/// (hull_topology.h) and SAT's edge arcs, and rotates what it reads.
+inline constexpr int kCachedVertices = 128;
+inline constexpr int kCachedFaces = 2 * kCachedVertices - 4;
 
 /// Hulls of more cached vertices than this are projected by
 /// project_columns (AVX2 where the processor has it); smaller ones inline,
@@ -102,10 +106,10 @@ class PosedHull {
   /// read them all: SAT's faces, the inner ball, the edge arcs and the faces
   /// reaching below the reference plane each turned them again, 1,800
   /// turns of a 128-point pair's call where 504 do. The same product as
-  /// world_face_normal's, so the same bits. Hulls of more faces than the
-  /// topology holds turn each normal where it is read.
+  /// world_face_normal's, so the same bits. Hulls of more faces than
+  /// kCachedFaces turn each normal where it is read.
   void turn_face_normals() const {
-    if (normals_turned_ || hull_.face_count > kTopologyMaxFaces) return;
+    if (normals_turned_ || hull_.face_count > kCachedFaces) return;
     for (int f = 0; f < hull_.face_count; ++f) normals_[f] = turned_normal(f);
     normals_turned_ = true;
   }
@@ -190,20 +194,14 @@ class PosedHull {
   /// polyhedron the first vertex with no neighbour further is a furthest
   /// one, to rounding (vertices within rounding of a face's plane can stop
   /// the climb one short, so callers use it as a bound, not as the answer).
-  /// Scans every vertex for a hull without topology.
+  /// Scans every vertex for a hull without topology. A hull too large for
+  /// its world vertices to be cached climbs too, rotating the vertices it
+  /// passes: scanning made each of a 1,024-point hull's climbs read all.
   int climb_to_support(const Vec3& world_direction, int start) const {
-    const HullTopology* t = cached_ ? topology() : nullptr;
+    const HullTopology* t = topology();
     if (!t) return support_vertex(world_direction);
-    int at = start;
-    double at_d = world_direction.dot(world_[at]);
-    for (int from = -1; from != at;) {
-      from = at;
-      for (const int* w = t->neighbours_begin(from); w != t->neighbours_end(from); ++w) {
-        const double d = world_direction.dot(world_[*w]);
-        if (d > at_d) at = *w, at_d = d;
-      }
-    }
-    return at;
+    if (cached_) return climb(*t, world_direction, start, [this](int i) -> const Vec3& { return world_[i]; });
+    return climb(*t, world_direction, start, [this](int i) { return world_vertex(i); });
   }
 
   /// The face on the other side of the loop step v0 -> v1 of some face, or -1
@@ -269,6 +267,20 @@ class PosedHull {
  private:
   Vec3 turned_normal(int f) const { return rotation_ * to_vec(hull_.face_normals[f]); }
 
+  template <class Vertex>
+  static int climb(const HullTopology& t, const Vec3& world_direction, int start, Vertex&& vertex) {
+    int at = start;
+    double at_d = world_direction.dot(vertex(at));
+    for (int from = -1; from != at;) {
+      from = at;
+      for (const int* w = t.neighbours_begin(from); w != t.neighbours_end(from); ++w) {
+        const double d = world_direction.dot(vertex(*w));
+        if (d > at_d) at = *w, at_d = d;
+      }
+    }
+    return at;
+  }
+
   const mfz_hull& hull_;
   const Pose& pose_;
   Mat3 rotation_;
@@ -278,7 +290,7 @@ class PosedHull {
   mutable double reach_from_origin_ = -1;
   mutable double span_ = -1;
   mutable bool normals_turned_ = false;
-  mutable Vec3 normals_[kTopologyMaxFaces];
+  mutable Vec3 normals_[kCachedFaces];
   Vec3 world_[kCachedVertices];
   double xs_[kCachedVertices], ys_[kCachedVertices], zs_[kCachedVertices];
 };
