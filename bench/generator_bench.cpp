@@ -227,7 +227,7 @@ int main(int argc, char** argv) {
     }
     pairs = static_cast<int>(n);
   }
-  const std::vector<bench::BenchFamily> families = bench::bench_families(pairs);
+  const std::vector<bench::BenchFamily> families = bench::bench_families(pairs, /*large=*/true);
   for (const auto& family : families)
     for (const Contender& c : contenders) {
       if (c.boxes_only && !family.boxes) continue;
