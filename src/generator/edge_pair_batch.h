@@ -48,8 +48,13 @@ class EdgePairBatchOf {
   int arc_a(int k) const { return arc_a_[k]; }
   int arc_b(int k) const { return arc_b_[k]; }
 
-  /// Both hulls projected onto every pair's axis.
+  /// Both hulls projected onto every pair's axis. An empty batch projects
+  /// nothing: SAT settles its batch at the end of every edge phase, and a
+  /// hull too large to cache its world vertices, which never fills one,
+  /// has no columns to read (ASan: a 129-point hull's projection read past
+  /// the 128 cached, once such hulls had edge arcs).
   void project(const PosedHull& a, const PosedHull& b) {
+    if (count_ == 0) return;
     a.project_onto_axes(axis_x_, axis_y_, axis_z_, count_, min_a_, max_a_);
     b.project_onto_axes(axis_x_, axis_y_, axis_z_, count_, min_b_, max_b_);
   }

@@ -4,6 +4,7 @@
 /// the generator's hot path reads local vertices and rotates on demand, so a
 /// call allocates nothing whatever the hull's size.
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -174,6 +175,7 @@ class PosedHull {
   /// hull whose world vertices are cached (kCachedVertices).
   void project_onto_axes(const double* ax, const double* ay, const double* az, int count, double* lowest,
                          double* highest) const {
+    assert(cached_);
     mfz::project_onto_axes(xs_, ys_, zs_, hull_.vertex_count, ax, ay, az, count, lowest, highest);
   }
 
