@@ -389,8 +389,10 @@ TEST(SatPruning, LargeHullsBoundedByRowsFindTheAxisEveryPairFinds) {
 TEST(SatPruning, HullsTooLargeToCacheHaveArcsAndFindTheAxisEveryPairFinds) {
   std::mt19937 random(20261129);
   int overlapping = 0;
-  for (unsigned seed = 1; seed <= 12; ++seed) {
-    const int sizes[] = {129, 160, 256};
+  // Eight pairs of at most 192 points: measuring every pair of two
+  // 256-point hulls took ASan's build seconds a pair.
+  for (unsigned seed = 1; seed <= 8; ++seed) {
+    const int sizes[] = {129, 144, 192};
     const test::OverlappingClouds clouds(test::sphere_points(sizes[seed % 3], seed), sizes[(seed / 3) % 3],
                                          2000 + seed, random);
     const PosedHull posed_a(clouds.view_a, clouds.pose_a), posed_b(clouds.view_b, clouds.pose_b);
@@ -406,7 +408,7 @@ TEST(SatPruning, HullsTooLargeToCacheHaveArcsAndFindTheAxisEveryPairFinds) {
     EXPECT_EQ(bounded.feature_b, every.feature_b) << "seed " << seed;
     EXPECT_EQ(bounded.depth, every.depth) << "seed " << seed;
   }
-  EXPECT_GT(overlapping, 8);
+  EXPECT_GT(overlapping, 5);
 }
 
 // A prism with every face a fan of triangles, as a modelling tool exports
