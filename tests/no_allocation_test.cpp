@@ -11,13 +11,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <new>
-#include <random>
 
 #include <pthread.h>
 
 #include "generator/builtin_generator.h"
 #include "families.h"
 #include "case/scene.h"
+#include "test_support.h"
 
 namespace {
 std::atomic<long> allocations{0};
@@ -46,14 +46,6 @@ std::vector<Vec3> prism(int sides) {
   return points;
 }
 
-std::vector<Vec3> sphere_cloud(int count, unsigned seed) {
-  std::mt19937 random(seed);
-  std::normal_distribution<double> gauss;
-  std::vector<Vec3> points;
-  for (int k = 0; k < count; ++k) points.push_back(Vec3(gauss(random), gauss(random), gauss(random)).normalized());
-  return points;
-}
-
 TEST(BuiltinGenerator, AllocatesNothingPerCall) {
   const Quat turn(Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()));
   std::vector<Scene> scenes;
@@ -62,7 +54,7 @@ TEST(BuiltinGenerator, AllocatesNothingPerCall) {
            {props::box_corners(1, 1, 1), props::box_corners(1, 1, 1), {Vec3(0.3, 0.2, 1.9), turn}},
            {prism(64), prism(64), {Vec3(0, 0, 0.95), Quat(Eigen::AngleAxisd(0.01, Vec3::UnitZ()))}},
            {prism(15), props::box_corners(0.3, 0.3, 0.3), {Vec3(0, 0, 0.75), Quat::Identity()}},
-           {sphere_cloud(300, 1), sphere_cloud(1024, 2), {Vec3(0.3, 0.2, 1.2), turn}}}) {
+           {test::sphere_points(300, 1), test::sphere_points(1024, 2), {Vec3(0.3, 0.2, 1.2), turn}}}) {
     CaseFile c;
     c.points_a = a;
     c.points_b = b;
@@ -135,8 +127,8 @@ TEST(BuiltinGenerator, ACallUsesUnder64KiBOfStack) {
   for (unsigned seed = 1; seed <= 10; ++seed) {
     const int points = seed <= 8 ? 128 : 1024;
     CaseFile c;
-    c.points_a = sphere_cloud(points, seed);
-    c.points_b = sphere_cloud(points, 100 + seed);
+    c.points_a = test::sphere_points(points, seed);
+    c.points_b = test::sphere_points(points, 100 + seed);
     c.pose_b = {Vec3(0.3, 0.2, 1.2), Quat(Eigen::AngleAxisd(0.1 * seed, Vec3(1, 2, 3).normalized()))};
     scenes.push_back(std::move(*make_scene(c).scene));
   }
