@@ -137,8 +137,8 @@ MFZ_VECTOR_LANES void crossing_flags(const ArcColumns& k, int begin, int count, 
 // keep_arcs kept (`index` from `begin`). At most kStretch arcs, so that
 // the flags stay a kilobyte on the stack whatever the hull's size.
 constexpr int kStretch = 128;
-[[gnu::always_inline]] inline int gather_stretch(const ArcColumns& columns, int begin, int arcs, const int* index, const EdgeArc& arc_a,
-                          int* out) {
+[[gnu::always_inline]] inline int gather_stretch(const ArcColumns& columns, int begin, int arcs, const int* index,
+                                                 const EdgeArc& arc_a, int* out) {
   // The ends are unit vectors and so is |across| at most: each dot product
   // is within a few ulps of the test's own, and so is their product.
   constexpr double kLaneRounding = 1e-13;
@@ -151,7 +151,8 @@ constexpr int kStretch = 128;
   int found = 0;
   for (int block = 0; block < arcs; block += 4) {
     if ((flags[block] | flags[block + 1] | flags[block + 2] | flags[block + 3]) == 0) continue;
-    for (int j = block; j < block + 4; ++j) out[found] = index ? index[j] : begin + j, found += static_cast<int>(flags[j]);
+    for (int j = block; j < block + 4; ++j)
+      out[found] = index ? index[j] : begin + j, found += static_cast<int>(flags[j]);
   }
   return found;
 }

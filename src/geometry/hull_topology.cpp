@@ -58,7 +58,7 @@ constexpr size_t kLargestEntry =
 static_assert(kTopologyStoreBytes >= 64 * kLargestEntry, "the ring must hold many of the largest topologies");
 
 // What a build works in besides the ring: the steps bucketed by their first
-// vertex, and counts per vertex. Sized for the largest hull, 113 KB, so
+// vertex, and counts per vertex. Sized for the largest hull, 114 KB, so
 // kept with the store, reserved with it, not on the call's stack.
 struct BuildScratch {
   int step_end[kTopologyMaxSteps], step_face[kTopologyMaxSteps];
