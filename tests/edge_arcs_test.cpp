@@ -530,5 +530,59 @@ TEST(SatPruning, TriangulatedPrismsGiveTheAxisEveryPairGives) {
   EXPECT_GT(seen.edge_axes, 0) << "a rim sliding off should give an edge axis";
 }
 
+// A cube's corner against a 37-gon prism's rim (74 vertices, past the
+// hulls whose pairs SAT bounds by projecting them): a row of one of the
+// cube's edges holds dozens of the prism's edges, which SAT bounds all at
+// once in vector lanes before any alone (generator/pair_bounds.h). The
+// property above found the first of these poses, 0.0087 deep on an edge
+// axis, when the lanes' verdict left out the edges' bound along m: the
+// winning pair, hopeless against m but the depth along it, was dropped and
+// SAT answered 0.0135. Around it, the prism turned by up to 0.2 rad and
+// brought to touch, then pressed 1e-3 and 1e-2 in: the answer is the one
+// every pair gives, edge axes included (70 of the 80 answers differed with
+// that bound left out).
+TEST(SatPruning, ACubesCornerOnALargePrismsRimBoundedInLanesGivesTheAxisEveryPairGives) {
+  const auto cube = build_hull(test::box_points(0.5, 0.5, 0.5));
+  std::vector<Vec3> rims;
+  for (const double z : {-0.2, 0.2})
+    for (int k = 0; k < 37; ++k) rims.push_back(Vec3(std::cos(2 * M_PI * k / 37), std::sin(2 * M_PI * k / 37), z));
+  const auto prism = build_hull(rims);
+  const mfz_hull view_cube = cube.hull->view(), view_prism = prism.hull->view();
+  const Pose pose_cube{Vec3::Zero(), Quat(0.9510565162951535, -0.17841104488654494, -0.17841104488654494,
+                                          -0.17841104488654494)};
+  const Vec3 found_at(0.3006786137387, 0.36818060932215196, -1.573663111431232);
+  const Quat found_turned(0.7642735968035591, 0.3083568853670167, -0.5643096735872655, -0.04854372020701914);
+  const PosedHull posed_cube(view_cube, pose_cube);
+  std::mt19937 random(20261129);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int overlapping = 0, edge_axes = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const double turn = trial == 0 ? 0.0 : 0.2;
+    const Quat turned = (test::about(Vec3(u(random), u(random), u(random)).normalized(), turn * u(random)) *
+                         found_turned).normalized();
+    const Vec3 towards = found_at.normalized();
+    const auto apart = [&](double distance) {
+      const PosedHull posed_prism(view_prism, Pose{distance * towards, turned});
+      return run_sat_every_pair(posed_cube, posed_prism).separated;
+    };
+    // Where the prism first touches, coming in along `towards`, by halving.
+    double in = 0, out = 4;
+    for (int step = 0; step < 40; ++step) (apart(0.5 * (in + out)) ? out : in) = 0.5 * (in + out);
+    for (const double pressed : {1e-3, 1e-2}) {
+      const PosedHull posed_prism(view_prism, Pose{(in - pressed) * towards, turned});
+      const SatResult bounded = run_sat(posed_cube, posed_prism), every = run_sat_every_pair(posed_cube, posed_prism);
+      ASSERT_EQ(bounded.separated, every.separated) << "trial " << trial;
+      if (every.separated) continue;
+      ++overlapping;
+      EXPECT_EQ(bounded.kind, every.kind) << "trial " << trial << " pressed " << pressed;
+      EXPECT_NEAR(bounded.depth, every.depth, 1e-12) << "trial " << trial << " pressed " << pressed;
+      EXPECT_NEAR(std::abs(bounded.normal.dot(every.normal)), 1.0, 1e-12) << "trial " << trial;
+      edge_axes += every.kind == AxisKind::edge_edge;
+    }
+  }
+  EXPECT_EQ(overlapping, 80);
+  EXPECT_GT(edge_axes, 20) << "the edge pairs should win some of the pairs";
+}
+
 }  // namespace
 }  // namespace mfz

@@ -97,6 +97,15 @@ void EdgeArcs::write_columns(const PosedHull& hull) {
   pad_to_lanes(c, count_);
 }
 
+void EdgeArcs::write_edge_vectors(const PosedHull& hull) {
+  EdgeVectors& e = storage_->edges;
+  for (int i = 0; i < count_; ++i) {
+    const ArcIndices& at = storage_->indices[i];
+    const Vec3 edge = hull.world_vertex(at.v1) - hull.world_vertex(at.v0);
+    e.x[i] = edge.x(), e.y[i] = edge.y(), e.z[i] = edge.z();
+  }
+}
+
 // With A's arc a -> b and B's negated c -> d: c . across_a times
 // d . across_a (the ends of B's arc either side of A's circle), then
 // a . across_b times b . across_b (A's either side of B's), then

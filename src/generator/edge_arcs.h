@@ -58,6 +58,11 @@ struct ArcColumns {
   double v0_x[kArcColumnLength], v0_y[kArcColumnLength], v0_z[kArcColumnLength];              ///< world v0
 };
 
+/// Each arc's edge, v1 - v0 in world space, as columns (x, y, z).
+struct EdgeVectors {
+  double x[kMaxArcs], y[kMaxArcs], z[kMaxArcs];
+};
+
 class EdgeArcs {
  public:
   EdgeArcs() = default;
@@ -100,6 +105,13 @@ class EdgeArcs {
   /// built from is alive.
   const ArcColumns& columns() const { return storage_->columns; }
 
+  /// Writes each arc's edge vector (edge_vectors), from the hull built
+  /// from: only SAT's rows of many pairs read them (generator/pair_bounds.h),
+  /// so a build leaves them unwritten.
+  void write_edge_vectors(const PosedHull& hull);
+  /// What write_edge_vectors wrote.
+  const EdgeVectors& edge_vectors() const { return storage_->edges; }
+
   /// The arcs (of B) that may cross `arc_a` (an arc of A's):
   /// may_span_minkowski_face's three tests, for every arc at once, in
   /// vector lanes. A margin over the test's slack covers the lanes' other
@@ -114,6 +126,7 @@ class EdgeArcs {
   struct Storage {
     ArcIndices indices[kMaxArcs];
     ArcColumns columns;
+    EdgeVectors edges;
   };
   std::unique_ptr<Storage> storage_;  ///< allocated by the first build
   int count_ = 0;
