@@ -383,14 +383,6 @@ int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
                                                   : hull.support_vertex(direction);
 }
 
-// What SAT's edge phase keeps off the call's stack (the arcs, rows and
-// margins, sized for hulls of 1,024 vertices: about 1.1 MB): one per
-// thread, allocated on the thread's first call, as a call runs to its end
-// before the thread makes another. Allocated, not a thread-local object
-// itself, so that a thread that never calls the generator carries none of
-// it. Looked up once per call and held by reference: each use of a
-// thread-local object inside SAT's lambdas looked its address up again,
-// and those lookups were 1.7% of a 32-point call's instructions.
 // Rows of fewer pairs are bounded one pair at a time only: a 128-point
 // pair's rows hold one pair on average, and with rows of four in lanes the
 // set-up and B's edge vectors cost its calls 0.7% more instructions (rows
@@ -404,6 +396,14 @@ struct PairBoundWork {
   int64_t hopeless[kMaxArcs];
 };
 
+// What SAT's edge phase keeps off the call's stack (the arcs, rows and
+// margins, sized for hulls of 1,024 vertices: about 1.3 MB): one per
+// thread, allocated on the thread's first call, as a call runs to its end
+// before the thread makes another. Allocated, not a thread-local object
+// itself, so that a thread that never calls the generator carries none of
+// it. Looked up once per call and held by reference: each use of a
+// thread-local object inside SAT's lambdas looked its address up again,
+// and those lookups were 1.7% of a 32-point call's instructions.
 struct SatWorkspace {
   EdgeArcs arcs_a, arcs_b;
   EdgePairBatch batch;
