@@ -13,21 +13,10 @@
 namespace mfz {
 namespace {
 
-// SAT's single bound before it climbs (sat.cpp's pair_is_hopeless), as it
-// is written there with Vec3: hopeless when a bound against m (the balls,
-// or the vertices where the last climbs ended) and the edges' bound along
-// m both pass the threshold.
-bool single_pair_hopeless(const RowOfPairs& row, const Vec3& b0, const Vec3& edge_b) {
-  const Vec3 axis = row.edge_a.cross(edge_b);
-  const double length = axis.norm();
-  if (!(length > 0)) return false;
-  const Vec3 m = (axis.dot(row.out_of_a) >= 0 ? axis : Vec3(-axis)) / length;
-  const bool balls = m.dot(row.centres) + row.inner_a + row.inner_b > row.threshold;
-  const bool ends = m.dot(row.back_b) - m.dot(row.back_a) > row.threshold;
-  return (balls || ends) && m.dot(row.vertex_a) - m.dot(b0) > row.threshold;
-}
-
-// The three bounds of pair k, for thresholds set at them.
+// SAT's single bound of a pair before it climbs (sat.cpp's
+// pair_is_hopeless), as it is written there with Vec3: against m the
+// balls' bound and the last climbs' ends' bound, then along m the edges'
+// bound. None where the edges are parallel (no axis).
 std::vector<double> bounds_of(const RowOfPairs& row, const Vec3& b0, const Vec3& edge_b) {
   const Vec3 axis = row.edge_a.cross(edge_b);
   const double length = axis.norm();
@@ -35,6 +24,14 @@ std::vector<double> bounds_of(const RowOfPairs& row, const Vec3& b0, const Vec3&
   const Vec3 m = (axis.dot(row.out_of_a) >= 0 ? axis : Vec3(-axis)) / length;
   return {m.dot(row.centres) + row.inner_a + row.inner_b, m.dot(row.back_b) - m.dot(row.back_a),
           m.dot(row.vertex_a) - m.dot(b0)};
+}
+
+// Hopeless when a bound against m and the bound along m both pass the
+// threshold.
+bool single_pair_hopeless(const RowOfPairs& row, const Vec3& b0, const Vec3& edge_b) {
+  const std::vector<double> bound = bounds_of(row, b0, edge_b);
+  if (bound.empty()) return false;
+  return (bound[0] > row.threshold || bound[1] > row.threshold) && bound[2] > row.threshold;
 }
 
 struct Pairs {
