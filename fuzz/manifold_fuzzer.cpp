@@ -7,6 +7,11 @@
 // (run in its worker with the call limit MANIFUZZ_CALL_TIMEOUT, seconds);
 // MANIFUZZ_LEVEL=strict asks for one canonical answer in ties;
 // MANIFUZZ_PROFILE=... replaces keys of the generator's declared profile.
+// A plugin built with coverage counters (clang's -fsanitize=fuzzer-no-link)
+// has them carried from its worker to the fuzzer after every call
+// (harness/plugin_coverage.h), so its own branches guide the fuzzing too;
+// MANIFUZZ_PLUGIN_COVERAGE=off leaves them in the worker, to measure what
+// they bring.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -101,7 +106,9 @@ extern "C" int LLVMFuzzerInitialize(int* argc, char*** argv) {
     }
   }
   std::string error;
-  t.generator = open_session(t.generator_spec, call_timeout, error);
+  const char* plugin_coverage = std::getenv("MANIFUZZ_PLUGIN_COVERAGE");
+  const bool share_plugin_coverage = !plugin_coverage || std::strcmp(plugin_coverage, "off") != 0;
+  t.generator = open_session(t.generator_spec, call_timeout, error, share_plugin_coverage);
   if (!t.generator) {
     std::fprintf(stderr, "manifold_fuzzer: %s\n", error.c_str());
     std::exit(2);

@@ -35,16 +35,18 @@ std::string one_line(const char* text) {
 
 }  // namespace
 
+// dlopen searches the system's library path for a name without a slash.
+std::string Generator::library_path(const std::string& spec) {
+  return spec.find('/') == std::string::npos ? "./" + spec : spec;
+}
+
 std::optional<Generator> Generator::open(const std::string& spec, std::string& error) {
   if (spec == "builtin") return builtin();
   if (spec.find('/') == std::string::npos && spec.find(".so") == std::string::npos) {
     error = "unknown generator '" + spec + "': expected 'builtin', a generator that comes with manifuzz and was built here (manifuzz --help lists them) or a path to a plugin .so";
     return std::nullopt;
   }
-  // dlopen searches the system's library path for a name without a slash:
-  // `x.so` means the file in the current folder, as a user expects.
-  const std::string path = spec.find('/') == std::string::npos ? "./" + spec : spec;
-  void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  void* handle = dlopen(library_path(spec).c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) {
     error = "cannot load generator: " + one_line(dlerror());
     return std::nullopt;

@@ -22,6 +22,10 @@ class Generator {
   /// reason (missing file, not a shared library, missing symbol, wrong ABI).
   static std::optional<Generator> open(const std::string& spec, std::string& error);
 
+  /// The path `open` hands to dlopen for a plugin's spec: a name without
+  /// a slash means the file in the current folder, as a user expects.
+  static std::string library_path(const std::string& spec);
+
   const std::string& name() const { return name_; }
   /// What its optional `mfz_generator_profile()` returned (empty: none).
   const std::string& declared_profile() const { return profile_; }

@@ -1,14 +1,18 @@
 #include "harness/generator_session.h"
 
 #include "harness/interruption.h"
+#include "harness/plugin_coverage.h"
 
+#include <dlfcn.h>
 #include <poll.h>
 #include <sys/prctl.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
@@ -93,8 +97,10 @@ bool read_hull(int fd, OwnedHull& h) {
 }
 
 // The worker: loads the generator, says hello, then answers requests until
-// its input closes.
-[[noreturn]] void serve(const std::string& spec, int in, int out) {
+// its input closes. Asked to share its coverage, it says in its hello how
+// many counters the plugin keeps (harness/plugin_coverage.h), and sends
+// after each answer the counters the call set.
+[[noreturn]] void serve(const std::string& spec, bool share_coverage, int in, int out) {
   // The worker dies with the harness (a SIGKILL included), and what a plugin
   // prints goes to the harness's stderr, never into its stdout, where
   // scripts read VIOLATION lines and JSON.
@@ -103,9 +109,17 @@ bool read_hull(int fd, OwnedHull& h) {
   dup2(STDERR_FILENO, STDOUT_FILENO);
   std::string error;
   const auto generator = Generator::open(spec, error);
-  // The name, then the declared profile after a NUL (neither holds one).
-  const std::string hello =
+  CoverageCounters counters;
+  if (generator && share_coverage) {
+    counters = coverage_counters_at(reinterpret_cast<const void*>(generator->entry_point()));
+    std::string loading;
+    take_coverage_hits(counters, loading);  // what loading it counted is no call's
+  }
+  // The name, then the declared profile after a NUL (neither holds one),
+  // then, when asked, the number of counters after another.
+  std::string hello =
       generator ? "ok " + generator->name() + std::string(1, '\0') + generator->declared_profile() : "error " + error;
+  if (generator && share_coverage) hello += std::string(1, '\0') + std::to_string(counters.size);
   const uint32_t length = static_cast<uint32_t>(hello.size());
   write_all(out, &length, sizeof length);
   write_all(out, hello.data(), hello.size());
@@ -113,17 +127,23 @@ bool read_hull(int fd, OwnedHull& h) {
   OwnedHull a, b;
   mfz_pose pa, pb;
   mfz_manifold manifold;
+  std::string answer;
   while (read_hull(in, a) && read_all(in, &pa, sizeof pa) && read_hull(in, b) && read_all(in, &pb, sizeof pb)) {
     const mfz_hull va = a.view(), vb = b.view();
     const int32_t status = generator->generate(va, pa, vb, pb, manifold);
-    if (!write_all(out, &status, sizeof status) || !write_all(out, &manifold, sizeof manifold)) break;
+    answer.clear();
+    put(answer, &status, sizeof status);
+    put(answer, &manifold, sizeof manifold);
+    if (counters.size > 0) take_coverage_hits(counters, answer);
+    if (!write_all(out, answer.data(), answer.size())) break;
   }
   _exit(0);
 }
 
 class WorkerSession final : public GeneratorSession {
  public:
-  WorkerSession(std::string spec, double timeout) : spec_(std::move(spec)), timeout_ms_(static_cast<int>(timeout * 1000)) {}
+  WorkerSession(std::string spec, double timeout, bool share_coverage)
+      : spec_(std::move(spec)), timeout_ms_(static_cast<int>(timeout * 1000)), share_coverage_(share_coverage) {}
   ~WorkerSession() override { stop(); }
 
   const std::string& name() const override { return name_; }
@@ -139,7 +159,7 @@ class WorkerSession final : public GeneratorSession {
       setpgid(0, 0);  // its own group: stopping it stops whatever the plugin forked
       close(to_worker[1]);
       close(from_worker[0]);
-      serve(spec_, to_worker[0], from_worker[1]);
+      serve(spec_, share_coverage_, to_worker[0], from_worker[1]);
     }
     close(to_worker[0]);
     close(from_worker[1]);
@@ -154,7 +174,10 @@ class WorkerSession final : public GeneratorSession {
     if (hello.rfind("ok ", 0) == 0) {
       const size_t nul = hello.find('\0');
       name_ = hello.substr(3, nul == std::string::npos ? std::string::npos : nul - 3);
-      if (nul != std::string::npos) profile_ = hello.substr(nul + 1);
+      const size_t second = nul == std::string::npos ? nul : hello.find('\0', nul + 1);
+      if (nul != std::string::npos) profile_ = hello.substr(nul + 1, second == std::string::npos ? second : second - nul - 1);
+      worker_counters_ = second == std::string::npos ? 0 : std::strtoull(hello.c_str() + second + 1, nullptr, 10);
+      if (worker_counters_ > 0) load_counters_here();
       return {};
     }
     stop();
@@ -182,7 +205,8 @@ class WorkerSession final : public GeneratorSession {
       failure = "no answer within " + std::to_string(timeout_ms_) + " ms";
       return CallOutcome::hung;
     }
-    if (sent && read_all(from_, &status, sizeof status) && read_all(from_, &out, sizeof out)) return CallOutcome::done;
+    if (sent && read_all(from_, &status, sizeof status) && read_all(from_, &out, sizeof out) && read_coverage_hits())
+      return CallOutcome::done;
     failure = "the worker died: " + reap();
     return CallOutcome::crashed;
   }
@@ -226,8 +250,36 @@ class WorkerSession final : public GeneratorSession {
     to_ = from_ = -1;
   }
 
+  // This process loads the plugin too, once, and never calls it: so that
+  // libFuzzer, which reads the counters of the modules loaded here, knows
+  // the plugin's. Its counters must be the worker's, counter for counter;
+  // they are by size, being the same file's. The library stays loaded: the
+  // fuzzer keeps pointers into it.
+  void load_counters_here() {
+    if (!here_.begin) {
+      if (void* library = dlopen(Generator::library_path(spec_).c_str(), RTLD_NOW | RTLD_LOCAL))
+        if (void* entry = dlsym(library, "mfz_generate")) here_ = coverage_counters_at(entry);
+    }
+    if (here_.size != worker_counters_) here_ = {};
+  }
+
+  // The counters the call set, when the worker shares them; false when the
+  // message breaks off (the worker died) or names more counters than there are.
+  bool read_coverage_hits() {
+    if (worker_counters_ == 0) return true;
+    uint32_t count = 0;
+    if (!read_all(from_, &count, sizeof count) || count > std::min(worker_counters_, kMaxSharedCounters)) return false;
+    hits_.resize(count);
+    if (!read_all(from_, hits_.data(), sizeof(uint32_t) * count)) return false;
+    return !here_.begin || apply_coverage_hits(here_, hits_.data(), count);
+  }
+
   std::string spec_, name_, profile_;
   int timeout_ms_;
+  bool share_coverage_;
+  size_t worker_counters_ = 0;  // how many the worker's plugin keeps (0: none sent)
+  CoverageCounters here_;  // the same plugin's, loaded here
+  std::vector<uint32_t> hits_;
   pid_t pid_ = -1;
   int to_ = -1, from_ = -1;
 };
@@ -239,11 +291,11 @@ std::unique_ptr<GeneratorSession> in_process_session(Generator generator) {
 }
 
 std::unique_ptr<GeneratorSession> open_session(const std::string& spec, double call_timeout_seconds,
-                                               std::string& error) {
+                                               std::string& error, bool share_plugin_coverage) {
   if (spec == "builtin") return in_process_session(Generator::builtin());
   // A dead worker must not kill the harness with SIGPIPE on the next write.
   signal(SIGPIPE, SIG_IGN);
-  auto worker = std::make_unique<WorkerSession>(spec, call_timeout_seconds);
+  auto worker = std::make_unique<WorkerSession>(spec, call_timeout_seconds, share_plugin_coverage);
   if (std::string why = worker->start(); !why.empty()) {
     error = why;
     return nullptr;

@@ -30,9 +30,11 @@ class GeneratorSession {
 
 /// `builtin` in process; anything else (a plugin path) in a worker process
 /// with `call_timeout_seconds` per call. nullptr and a one-line reason when
-/// the generator cannot be loaded.
+/// the generator cannot be loaded. With `share_plugin_coverage` (the
+/// fuzzer), a plugin built with coverage counters has them carried here
+/// after each call (harness/plugin_coverage.h).
 std::unique_ptr<GeneratorSession> open_session(const std::string& spec, double call_timeout_seconds,
-                                               std::string& error);
+                                               std::string& error, bool share_plugin_coverage = false);
 
 /// An in-process session over an already opened generator.
 std::unique_ptr<GeneratorSession> in_process_session(Generator generator);
