@@ -82,13 +82,21 @@ done
 status=$?
 check test "$status" -le 1
 check grep -q "resuming from" "$scratch/third.log"
+# The engine's scratch folder of the killed run is gone too.
+check test ! -e "/dev/shm/manifuzz-fuzz-$victim"
 
-# 5. Ctrl-C: a clean stop, the summary so far, status 130, no fuzzer left.
+# 5. Ctrl-C: a clean stop, the summary so far, status 130, no fuzzer and
+# no scratch files left.
 # A finding made before the interrupt takes status 1, as in any run: the
 # built-in may have findings not yet found or fixed (corpus/open/), and once
 # in several CI runs these five seconds found one (stop 42, when O12 was
 # open). Then the log must name it.
-"$manifuzz" fuzz --seconds 60 --corpus "$scratch/corpus-int" --out "$scratch/out-int" >/dev/null 2>"$scratch/int.log" &
+# libFuzzer's scratch files leave nothing in TMPDIR (they went to the
+# campaign's own folder, removed at the end; libFuzzer left its folder
+# in TMPDIR when stopped).
+mkdir "$scratch/tmp-int"
+TMPDIR="$scratch/tmp-int" "$manifuzz" fuzz --seconds 60 --corpus "$scratch/corpus-int" --out "$scratch/out-int" \
+  >/dev/null 2>"$scratch/int.log" &
 fuzzing=$!
 sleep 5
 kill -INT "$fuzzing"
@@ -98,6 +106,9 @@ check test "$status" -eq 130 -o \( "$status" -eq 1 -a -n "$(grep '^found ' "$scr
 check grep -q "interrupted; the summary so far" "$scratch/int.log"
 sleep 1
 check test -z "$(pgrep -f "corpus-int" || true)"
+check test -z "$(ls -A "$scratch/tmp-int")"
+check test ! -e "/dev/shm/manifuzz-fuzz-$fuzzing"
+check test -z "$(ls -A "$scratch/out-int" | grep '^\.fuzz-' || true)"
 
 # 6. Bad input: one line, exit 2.
 for args in "--jobs 0" "--seconds 0" "--seconds x" "--corpus ''" "--frobnicate"; do
