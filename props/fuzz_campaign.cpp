@@ -19,6 +19,7 @@
 
 #include <fcntl.h>
 #include <sys/prctl.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -415,13 +416,17 @@ fs::path make_work_folder(const fs::path& out) {
 // machine's ext4, creating those files took a fifth of a campaign's time
 // (perf: the kernel's inode allocation), and a campaign stopped with
 // Ctrl-C left libFuzzer's folder behind (15 MB after a minute). The
-// folders of runs that died are removed first.
+// folders of runs that died are removed first. A small /dev/shm (a
+// container's is 64 MB) is passed by: a job's files and its log, which
+// holds whatever the plugin prints, can outgrow it.
 class EngineScratch {
  public:
   explicit EngineScratch(const fs::path& work) {
     std::error_code ec;
     const fs::path memory = "/dev/shm";
-    if (fs::is_directory(memory, ec) && access(memory.c_str(), W_OK) == 0) {
+    struct statvfs room {};
+    if (fs::is_directory(memory, ec) && access(memory.c_str(), W_OK) == 0 && statvfs(memory.c_str(), &room) == 0 &&
+        static_cast<double>(room.f_bavail) * static_cast<double>(room.f_frsize) >= kLeastMemoryBytes) {
       remove_folders_of_dead_runs(memory, kPrefix);
       path_ = memory / (kPrefix + std::to_string(getpid()));
       fs::remove_all(path_, ec);
@@ -440,6 +445,7 @@ class EngineScratch {
 
  private:
   static constexpr const char* kPrefix = "manifuzz-fuzz-";
+  static constexpr double kLeastMemoryBytes = 1 << 30;
   fs::path path_;
 };
 
