@@ -116,7 +116,7 @@ bool apply_coverage_hits(const CoverageCounters& counters, const uint32_t* hits,
     const size_t index = hits[k] >> 8;
     if (index >= counters.size) return false;
     // A fuzz execution makes several calls: their counts add up, and stop
-    // at the top, as a counter of the fuzzer's own would not wrap to zero.
+    // at the top rather than wrap, which would turn many hits into few.
     const unsigned sum = counters.begin[index] + (hits[k] & 0xffu);
     counters.begin[index] = static_cast<uint8_t>(std::min(sum, 255u));
   }
