@@ -371,8 +371,8 @@ bool Context::biased_face_axis() const {
 
 // How far a region's centroid lies outside the contacts' hull, and what is
 // allowed: kRegionPoint L, plus kRegionDrift times how far the centroid moves
-// between `region` and the region with B backed off along n by `nearer` of
-// the depth, closer to touching.
+// between `region` and the region with B backed off along n by `nearer`,
+// closer to touching.
 struct CentroidMiss {
   double off = INFINITY, allowed = 0, width = 0, drift = INFINITY;
   const char* region = "first-touching region";
@@ -382,7 +382,7 @@ struct CentroidMiss {
 CentroidMiss centroid_miss(const Context& c, const ContactRegion& region, double nearer,
                            const std::vector<Eigen::Vector2d>& contacts) {
   const Vec3 n = c.n.normalized();
-  const double depth = c.oracles.exact.signed_depth, slack = c.scene.length_tolerance(tol::kRegionSlack);
+  const double slack = c.scene.length_tolerance(tol::kRegionSlack);
   CentroidMiss miss;
   if (region.empty) return miss;
   miss.width = region.width;
@@ -396,7 +396,7 @@ CentroidMiss centroid_miss(const Context& c, const ContactRegion& region, double
     miss.allowed = c.scene.length_tolerance(tol::kRegionPoint);
     return miss;
   }
-  const ContactRegion closer = contact_region(c.scene, n, nearer * depth * n, slack);
+  const ContactRegion closer = contact_region(c.scene, n, nearer * n, slack);
   miss.drift = closer.empty ? INFINITY : (region.centroid - closer.centroid).norm();
   miss.allowed = c.scene.length_tolerance(tol::kRegionPoint) + tol::kRegionDrift * miss.drift;
   return miss;
@@ -426,13 +426,8 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   // Which of two equally aligned incident faces a generator clips is a tie;
   // clipping one covers only its part of the region (seed 17).
   if (c.oracles.ties.incident_face) return skipped("the incident faces tie: the region is a choice");
-  // The first-touching slab must be thicker than the frame's rounding that
-  // the region is computed with, or its drift is noise (1e6 L out, seed 16).
-  const double slack = c.scene.length_tolerance(tol::kRegionSlack);
-  if (!((1 - tol::kRegionFirstTouch) * depth > 4 * slack))
-    return skipped("the first-touching slab is below the frame's resolution");
   const Vec3 n = c.n.normalized();
-  const double first = tol::kRegionFirstTouch, halfway = (1 + tol::kRegionFirstTouch) / 2;
+  const double halfway = (1 + tol::kRegionFirstTouch) / 2;
   // A hull no thicker along n than the half slab lies whole in both
   // regions: each is that hull's outline, not what touched first, and the
   // centroid does not drift between them, so the tolerance does not grow.
@@ -444,16 +439,31 @@ InvariantCheck check_spans_contact_region(const Context& c) {
                                   directed_overlap(c.scene.world_b, c.scene.world_b, n));
   if ((1 - halfway) * depth >= thinner)
     return skipped("a hull is thinner along n than the first-touching slab: the region is its outline");
-  // A contact deeper than a quarter of the widest its region can be is no
-  // shallow one, whatever the region: the region is worked out only where
+  // The slab is a fraction of the depth, or of the thinner hull's thickness
+  // where that is less: a hull sunk deeper than its own thickness is
+  // resolved by a fraction of itself, not of the depth. A sliver 1.2e-3
+  // thick, 0.1 deep, four of its five vertices within 4e-4 of its bottom,
+  // lay in the slab of 1e-3 and in the half slab with one outline, did not
+  // drift (1.5e-7), and had that outline's centroid asked of the contacts
+  // on its lowest face (7e-4 off, tolerance 2e-6; h20, manifuzz fuzz).
+  // The intersection is no thicker along n than that either: a sunk hull's
+  // contact is shallow when the hull is thin beside its region's width.
+  const double thickness = std::min(depth, thinner), slab = (1 - tol::kRegionFirstTouch) * thickness;
+  // The slab must be thicker than the frame's rounding that the region is
+  // computed with, or its drift is noise (1e6 L out, seed 16).
+  const double slack = c.scene.length_tolerance(tol::kRegionSlack);
+  if (!(slab > 4 * slack)) return skipped("the first-touching slab is below the frame's resolution");
+  // A contact (an intersection) thicker than a quarter of the widest its
+  // region can be is no shallow one, whatever the region: the region is worked out only where
   // the bound lets it be thin (random overlapping hulls first touch at a
   // corner, 1% of the depth across, and working out that region only to
   // skip the check was 7% of a fuzz execution).
   const char* not_shallow = "not a shallow contact: the hulls' intersection is not thin along n";
-  const Vec3 first_touch = first * depth * n;
-  if (!(depth <= tol::kThinRegion * region_width_bound(c.scene, n, first_touch, slack))) return skipped(not_shallow);
+  const Vec3 first_touch = (depth - slab) * n;
+  if (!(thickness <= tol::kThinRegion * region_width_bound(c.scene, n, first_touch, slack)))
+    return skipped(not_shallow);
   const ContactRegion region = contact_region(c.scene, n, first_touch, slack);
-  if (region.empty || !(depth <= tol::kThinRegion * region.width)) return skipped(not_shallow);
+  if (region.empty || !(thickness <= tol::kThinRegion * region.width)) return skipped(not_shallow);
   // The region lying against two faces of one hull that both face the other
   // (a face folded under the contact) is the contract's folded-face tie: the
   // clipping method contacts one of them (near-coplanar, seeds 101, 102,
@@ -464,10 +474,11 @@ InvariantCheck check_spans_contact_region(const Context& c) {
   plane_basis(n, u, v);
   std::vector<Eigen::Vector2d> contacts;
   for (int i = 0; i < c.m.contact_count; ++i) contacts.emplace_back(u.dot(c.on_a(i)), v.dot(c.on_a(i)));
-  CentroidMiss miss = centroid_miss(c, region, halfway, contacts);
+  CentroidMiss miss = centroid_miss(c, region, depth - slab / 2, contacts);
   const bool reduced = c.profile.max_contacts > 0 && c.m.contact_count >= c.profile.max_contacts;
   if (!miss.passes() && reduced) {
-    const CentroidMiss whole = centroid_miss(c, contact_region(c.scene, n, Vec3::Zero(), slack), 0.5, contacts);
+    const CentroidMiss whole =
+        centroid_miss(c, contact_region(c.scene, n, Vec3::Zero(), slack), 0.5 * depth, contacts);
     if (whole.passes()) miss = whole, miss.region = "whole intersection";
   }
   return measured(c, c.relative(miss.off), c.relative(miss.allowed), [&] {
