@@ -170,6 +170,21 @@ inline constexpr double kParallelEdges = 1e-9;
 inline constexpr double kZoneParallelSine = 1e-12;
 /// The three directions' triple product, over the product of their lengths.
 inline constexpr double kZoneSpan = 1e-3;
+/// Generator: two boxes take the box path (generator/box_face_axis.h) when
+/// their edge directions are square to this cosine in their own frames (a
+/// box's corners given exactly are square to the bit): then the nine
+/// cosines between two boxes' directions are their rotation, and an axis's
+/// overlap comes out of them to 1e-12 of the size.
+inline constexpr double kBoxSquareness = 1e-12;
+/// Generator: the box path's overlaps differ from the bounded SAT's by the
+/// zones' parallelism (kZoneParallelSine of the size, summed over six
+/// edges) and rounding; a decision closer than this (x the size) is left to
+/// the bounded SAT.
+inline constexpr double kBoxAxisRounding = 1e-10;
+/// Generator: the box path's incident face must be more aligned with the
+/// normal than any other face of its box by this (a cosine, 1000 times
+/// kTie), or the significant-face rules and their ties decide.
+inline constexpr double kBoxIncidentLead = 1e-6;
 
 /// Generator: two faces lie in one plane when the sine of the angle between
 /// their normals is at most this (and the normals point the same way). A
