@@ -71,9 +71,10 @@ Quat turned(std::mt19937& random, double tilt) {
          test::about(Vec3::UnitZ(), angle(random));
 }
 
-// Boxes resting on boxes, tilted from nothing to 10 degrees, sunk from a
-// hair to a fifth of B, anywhere over A's top (overhanging its rim), at the
-// origin and far from it: the pairs the box path is for, and its edges.
+// Boxes resting on boxes, tilted from nothing to 11 degrees, sunk from a
+// hair to a fifth of B (one in five past its own thickness), anywhere over
+// A's top (overhanging its rim), at the origin and far from it: the pairs
+// the box path is for, and its edges.
 TEST(BoxPath, AnswersAsTheGeneralPathToTheBitOnBoxesRestingOnBoxes) {
   std::mt19937 random(20261129);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -89,7 +90,8 @@ TEST(BoxPath, AnswersAsTheGeneralPathToTheBitOnBoxesRestingOnBoxes) {
     const Quat orientation = turned(random, tilt);
     const Mat3 r = orientation.toRotationMatrix();
     const double reach = std::abs(r(2, 0)) * hb.x() + std::abs(r(2, 1)) * hb.y() + std::abs(r(2, 2)) * hb.z();
-    const double sunk = between(1e-6, 0.2) * hb.minCoeff();
+    // One pair in five sunk up to one and a half times its own thickness.
+    const double sunk = between(1e-6, k % 5 == 4 ? 3.0 : 0.2) * hb.minCoeff();
     const Vec3 far = k % 7 == 0 ? Vec3(1e4, -3e3, 2e3) : Vec3::Zero();
     const Pose pose_a{far, Quat::Identity()};
     const Pose pose_b{far + Vec3(between(-1.2, 1.2) * ha.x(), between(-1.2, 1.2) * ha.y(), ha.z() + reach - sunk),
@@ -153,11 +155,13 @@ TEST(BoxPath, LeavesEdgeAxesToTheGeneralPath) {
 }
 
 // Two faces of the incident box equally turned to the reference face: F11
-// clips both.
+// clips both. Turned about z too, so that no edge of B is parallel to one
+// of A's and the pair is left for its faces' tie, not for parallel edges.
 TEST(BoxPath, LeavesTiedIncidentFacesToTheGeneralPath) {
   const TwoBoxes boxes(test::box_points(2, 2, 1), test::box_points(0.5, 0.5, 0.5));
   const double reach = 0.5 * std::sqrt(2.0);
-  EXPECT_FALSE(boxes.boxed({Vec3(0, 0, 1 + reach - 0.01), test::about(Vec3::UnitX(), M_PI / 4)}));
+  const Quat on_its_edge = test::about(Vec3::UnitZ(), 0.3) * test::about(Vec3::UnitX(), M_PI / 4);
+  EXPECT_FALSE(boxes.boxed({Vec3(0, 0, 1 + reach - 0.01), on_its_edge}));
 }
 
 TEST(BoxPath, LeavesApartTouchingAndShearedPairsToTheGeneralPath) {

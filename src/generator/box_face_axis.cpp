@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "geometry/hull_topology.h"
+#include "geometry/parallelepiped.h"
 #include "geometry/tolerances.h"
 
 namespace mfz {
@@ -22,31 +22,20 @@ struct BoxFrame {
   double half[3];
 };
 
-// The hull's edge k in its own frame.
-Vec3 local_edge(const PosedHull& hull, const TopologyEdge& edge) {
-  return hull.local_vertex(edge.v1) - hull.local_vertex(edge.v0);
-}
-
-// Whether the hull is a box, and its frame in the world: a cube's loops
-// whose zones' four edges are one vector each, to tol::kZoneParallelSine
-// (so each face is a parallelogram, and the hull a parallelepiped), and
-// whose three edge vectors are square to tol::kBoxSquareness, both in the
-// hull's own frame, where a box's corners are exact. Square edges make the
-// cosines between two boxes' directions their whole rotation, and make
-// each face beside a box's incident face run straight into the box.
+// Whether the hull is a box, and its frame in the world: a parallelepiped
+// (geometry/parallelepiped.h: a cube's loops, each zone's edges parallel,
+// so each face is a parallelogram) whose three edge vectors are square to
+// tol::kBoxSquareness in the hull's own frame, where a box's corners are
+// exact. Square edges make the cosines between two boxes' directions their
+// whole rotation, and make each face beside a box's incident face run
+// straight into the box.
 bool box_frame(const PosedHull& hull, BoxFrame& box) {
-  const HullTopology* topology = hull.vertex_count() == 8 ? hull.topology() : nullptr;
-  if (!topology || !topology->has_cube_loops()) return false;
+  if (!is_parallelepiped(hull)) return false;
+  const HullTopology* topology = hull.topology();
   Vec3 edge[3];
   for (int z = 0; z < 3; ++z) {
-    edge[z] = local_edge(hull, topology->edge(topology->zone_edge(z, 0)));
-    const double length2 = edge[z].squaredNorm();
-    if (!(length2 > 0) || !std::isfinite(length2)) return false;
-    for (int k = 1; k < 4; ++k) {
-      const Vec3 other = local_edge(hull, topology->edge(topology->zone_edge(z, k)));
-      const Vec3 difference = other.dot(edge[z]) >= 0 ? Vec3(other - edge[z]) : Vec3(other + edge[z]);
-      if (!(difference.squaredNorm() <= tol::kZoneParallelSine * tol::kZoneParallelSine * length2)) return false;
-    }
+    const TopologyEdge& e = topology->edge(topology->zone_edge(z, 0));
+    edge[z] = hull.local_vertex(e.v1) - hull.local_vertex(e.v0);
   }
   for (int i = 0; i < 3; ++i) {
     const Vec3 &x = edge[i], &y = edge[(i + 1) % 3];
