@@ -378,6 +378,56 @@ TEST_F(ReducedManifold, LeavingTheDetailOutChangesNoVerdictOnTheStrip) {
   }
 }
 
+// Two plates 0.1 thick, sunk through each other (A's bottom and B's bottom
+// are edges, their tops faces at one height): the built-in clips eleven
+// points under A's top face, two of them the full-depth ends of the
+// first-touching strip along B's lowest edge. The contract passes the four
+// of largest area; four picked one at a time (the deepest, the farthest from
+// it, the largest triangle, the largest quadrilateral) keep one end of the
+// strip and the far side, and miss the whole intersection's centroid too
+// (O23: the reducing variant reduced so, and was flagged once moved).
+class PlatesSunkThroughEachOther : public ::testing::Test {
+ protected:
+  PlatesSunkThroughEachOther()
+      : run_(test::run_builtin(test::make_case(
+            {{0.91, 0.41, -0.05}, {-0.7, -0.7, -0.05}, {1.9, 0, 0.05}, {1.0624665, 1.5751714, 0.05}, {-2, 1, 0.05}},
+            {}, {{1, 0, -0.05}, {-0.1045, 1, -0.05}, {-0.7, -0.7, 0}, {1.9, 0, 0.05}, {1.7357364, 0.8, 0.05},
+                 {1, 1.6, 0.05}, {-1.4, 1.3, 0.05}},
+            {}))) {}
+
+  // The manifold keeping the contacts at (x, y) on A's top face.
+  mfz_manifold keeping(std::initializer_list<Eigen::Vector2d> kept) const {
+    mfz_manifold m = run_.manifold;
+    int count = 0;
+    for (const Eigen::Vector2d& xy : kept)
+      for (int i = 0; i < run_.manifold.contact_count; ++i)
+        if ((to_vec(run_.manifold.contacts[i].point_on_a).head<2>() - xy).norm() < 1e-3)
+          m.contacts[count++] = run_.manifold.contacts[i];
+    EXPECT_EQ(count, static_cast<int>(kept.size()));
+    m.contact_count = count;
+    return m;
+  }
+
+  CheckStatus spans(const mfz_manifold& m) const {
+    Profile profile;
+    profile.max_contacts = 4;
+    for (const InvariantCheck& c : check_manifold(run_.scene, run_.oracles, 0, m, profile).checks)
+      if (c.name == "spans-contact-region") return c.status;
+    return CheckStatus::skipped;
+  }
+
+  CaseRun run_;
+};
+
+TEST_F(PlatesSunkThroughEachOther, TheFourOfLargestAreaPassFourPickedOneAtATimeDoNot) {
+  ASSERT_EQ(to_vec(run_.manifold.normal), Vec3::UnitZ());
+  ASSERT_EQ(run_.manifold.contact_count, 11);
+  EXPECT_EQ(spans(keeping({{1, 1.563439}, {-1.225493, 0.801408}, {-1.338484, 1.124241}, {1.171734, 0.186735}})),
+            CheckStatus::pass);
+  EXPECT_EQ(spans(keeping({{-0.1045, 1}, {1.570287, 0.6201}, {1, 1.563439}, {1.171734, 0.186735}})),
+            CheckStatus::fail);
+}
+
 TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {
   for (int colliding : {0, 1}) {
     const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
