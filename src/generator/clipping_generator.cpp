@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "generator/box_face_axis.h"
+#include "generator/box_axis.h"
 #include "generator/clip_polygon.h"
 #include "generator/contact_output.h"
 #include "generator/coplanar_patch.h"
@@ -814,7 +814,9 @@ bool clip_incident_faces(ClipFace& reference, const ClipFace& incident, const in
   return true;
 }
 
-// The box path (generator/box_face_axis.h): two boxes whose face axis and
+// The box path (generator/box_axis.h): two boxes whose edge axis clears
+// every tie take the supporting edges' closest points, as the general path
+// does first. Two boxes whose face axis and
 // incident face clear every tie are clipped as below, one incident face
 // (its own loop: a box's faces have no coplanar neighbour), F27's faces
 // only where they may add a point, and without F50's other way round (the
@@ -827,9 +829,16 @@ bool clip_incident_faces(ClipFace& reference, const ClipFace& incident, const in
 // call in SAT and a sixth in F27's faces.
 bool clear_box_pair_contacts(const PosedHull& a, const PosedHull& b, double world_resolution, mfz_manifold& out,
                              const ClippingSteps& steps) {
-  BoxFaceAxis axis;
-  if (!clear_box_face_axis(a, b, axis)) return false;
+  BoxAxis axis;
+  if (!clear_box_axis(a, b, axis)) return false;
   const SatResult& sat = axis.sat;
+  out.contact_count = 0;
+  out.colliding = 1;
+  out.normal = to_abi(sat.normal);
+  out.penetration = -sat.depth;
+  // An edge pair: the closest points of the supporting edges (F3), as the
+  // general path answers first; where they do not cross, its fallbacks.
+  if (sat.kind == AxisKind::edge_edge) return steps.edge_contact(a, b, sat, out);
   const bool flipped = sat.kind == AxisKind::face_b;
   ClipFace reference{flipped ? &b : &a, flipped ? sat.feature_b : sat.feature_a, {}};
   const ClipFace incident{flipped ? &a : &b, axis.incident_face, flipped ? a.world_face_normal(axis.incident_face)
@@ -837,7 +846,6 @@ bool clear_box_pair_contacts(const PosedHull& a, const PosedHull& b, double worl
   reference.normal = reference.hull->world_face_normal(reference.index);
   ClipWorkspace& work = thread_workspace();
   Plane reference_plane;
-  out.contact_count = 0;
   if (!clip_incident_faces(reference, incident, &incident.index, 1, world_resolution, work, nullptr, steps,
                            face_loop, reference_plane))
     return false;
@@ -845,9 +853,6 @@ bool clear_box_pair_contacts(const PosedHull& a, const PosedHull& b, double worl
     add_faces_below_reference(*incident.hull, &incident.index, 1, reference, reference_plane, steps,
                               std::max(work.sides.largest, world_resolution), work, work.clipped);
   reduce_polygon(work.clipped, MFZ_MAX_CONTACTS);
-  out.colliding = 1;
-  out.normal = to_abi(sat.normal);
-  out.penetration = -sat.depth;
   steps.emit_contacts(reference, work.clipped, sat.normal, flipped, out);
   return out.contact_count > 0;
 }

@@ -96,7 +96,7 @@ struct ClippingSteps {
   void (*emit_contacts)(const ClipFace& reference, const ClipPolygon& clipped, const Vec3& n, bool flipped,
                         mfz_manifold& out);
   /// Two boxes whose face axis and incident face clear every tie take the
-  /// box path (generator/box_face_axis.h), which answers as the steps
+  /// box path (generator/box_axis.h), which answers as the steps
   /// above would. The built-in sets it; a variant that changes a step
   /// leaves it off, so that its change is met by every pair.
   bool box_path = false;

@@ -199,20 +199,6 @@ SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
   return best;
 }
 
-// The edge of a zone that supports the hull along `direction`: of parallel
-// edges, the one furthest along it (the first of equals).
-int supporting_zone_edge(const PosedHull& hull, int zone, const Vec3& direction) {
-  const HullTopology& topology = *hull.topology();
-  int best = topology.zone_edge(zone, 0);
-  double best_d = direction.dot(hull.world_vertex(topology.edge(best).v0));
-  for (int k = 1; k < 4; ++k) {
-    const int e = topology.zone_edge(zone, k);
-    const double d = direction.dot(hull.world_vertex(topology.edge(e).v0));
-    if (d > best_d) best = e, best_d = d;
-  }
-  return best;
-}
-
 // Two parallelepipeds (geometry/parallelepiped.h): one edge pair per pair of
 // directions, each zone's first edge standing for its four, in the order of
 // those edges. Every pair of directions spans faces of the Minkowski

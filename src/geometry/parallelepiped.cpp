@@ -35,4 +35,16 @@ bool is_parallelepiped(const PosedHull& hull) {
   return needed > 0 && std::isfinite(needed) && volume * volume >= needed;
 }
 
+int supporting_zone_edge(const PosedHull& hull, int zone, const Vec3& direction) {
+  const HullTopology& topology = *hull.topology();
+  int best = topology.zone_edge(zone, 0);
+  double best_d = direction.dot(hull.world_vertex(topology.edge(best).v0));
+  for (int k = 1; k < 4; ++k) {
+    const int e = topology.zone_edge(zone, k);
+    const double d = direction.dot(hull.world_vertex(topology.edge(e).v0));
+    if (d > best_d) best = e, best_d = d;
+  }
+  return best;
+}
+
 }  // namespace mfz

@@ -19,4 +19,10 @@ namespace mfz {
 /// flops, asked once per call.
 bool is_parallelepiped(const PosedHull& hull);
 
+/// The edge of a parallelepiped's zone `zone` that supports it along
+/// `direction`: of the zone's four parallel edges, the one furthest along
+/// it (the first of equals). SAT names an edge axis of two parallelepipeds
+/// by these, and so does the box path.
+int supporting_zone_edge(const PosedHull& hull, int zone, const Vec3& direction);
+
 }  // namespace mfz

@@ -170,7 +170,7 @@ inline constexpr double kParallelEdges = 1e-9;
 inline constexpr double kZoneParallelSine = 1e-12;
 /// The three directions' triple product, over the product of their lengths.
 inline constexpr double kZoneSpan = 1e-3;
-/// Generator: two boxes take the box path (generator/box_face_axis.h) when
+/// Generator: two boxes take the box path (generator/box_axis.h) when
 /// their edge directions are square to this cosine in their own frames (a
 /// box's corners given exactly are square to the bit): then the nine
 /// cosines between two boxes' directions are their rotation, and an axis's

@@ -1,17 +1,20 @@
-// The box path (generator/box_face_axis.h): two boxes whose face axis and
-// incident face clear every tie are answered without the bounded SAT, the
-// significant-face rules and F27's faces. It must answer as the general
-// path does, to the bit, and leave every tie, edge axis and near miss to it.
+// The box path (generator/box_axis.h): two boxes whose face axis and
+// incident face, or whose edge axis, clear every tie are answered without
+// the bounded SAT, the significant-face rules and F27's faces. It must
+// answer as the general path does, to the bit, and leave every tie and near
+// miss to it.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <cstring>
 #include <iomanip>
+#include <optional>
 #include <random>
 #include <vector>
 
+#include "case/case_file.h"
 #include "families.h"
-#include "generator/box_face_axis.h"
+#include "generator/box_axis.h"
 #include "generator/clipping_generator.h"
 #include "geometry/hull.h"
 #include "test_support.h"
@@ -50,6 +53,7 @@ ClippingSteps steps_with_box_path(bool on) {
 
 struct PathAnswers {
   bool box_path = false;  // the box path answered
+  AxisKind kind = AxisKind::face_a;  // with this kind of axis
   mfz_manifold general{}, boxed{};
 };
 
@@ -60,8 +64,9 @@ PathAnswers both_paths(const mfz_hull& a, const Pose& pose_a, const mfz_hull& b,
   generate_clipping_manifold(a, pose_a.to_abi(), b, pose_b.to_abi(), answers.boxed, nullptr, boxed);
   // The frame the generator works in (F21): A's position at the origin.
   const Pose local_a{Vec3::Zero(), pose_a.orientation}, local_b{pose_b.position - pose_a.position, pose_b.orientation};
-  BoxFaceAxis axis;
-  answers.box_path = clear_box_face_axis(PosedHull(a, local_a), PosedHull(b, local_b), axis);
+  BoxAxis axis;
+  answers.box_path = clear_box_axis(PosedHull(a, local_a), PosedHull(b, local_b), axis);
+  answers.kind = axis.sat.kind;
   return answers;
 }
 
@@ -79,7 +84,7 @@ TEST(BoxPath, AnswersAsTheGeneralPathToTheBitOnBoxesRestingOnBoxes) {
   std::mt19937 random(20261129);
   std::uniform_real_distribution<double> unit(0, 1);
   const auto between = [&](double low, double high) { return low + (high - low) * unit(random); };
-  int pairs = 0, boxed = 0, with_contacts = 0;
+  int pairs = 0, boxed = 0, edges = 0, with_contacts = 0;
   for (int k = 0; k < 6000; ++k) {
     const Vec3 ha(between(0.5, 2), between(0.5, 2), between(0.2, 1)), hb(between(0.2, 0.8), between(0.2, 0.8),
                                                                           between(0.2, 0.8));
@@ -99,6 +104,7 @@ TEST(BoxPath, AnswersAsTheGeneralPathToTheBitOnBoxesRestingOnBoxes) {
     const PathAnswers answers = both_paths(hull_a.view(), pose_a, hull_b.view(), pose_b);
     ++pairs;
     boxed += answers.box_path;
+    edges += answers.box_path && answers.kind == AxisKind::edge_edge;
     with_contacts += answers.boxed.contact_count > 0;
     ASSERT_TRUE(same_bits(answers.boxed, answers.general))
         << "pair " << k << ", tilt " << tilt << "\n"
@@ -106,6 +112,7 @@ TEST(BoxPath, AnswersAsTheGeneralPathToTheBitOnBoxesRestingOnBoxes) {
                                        test::box_points(hb.x(), hb.y(), hb.z()), pose_b));
   }
   EXPECT_GT(boxed, pairs / 4) << "the box path should answer many of these pairs";
+  EXPECT_GT(edges, pairs / 100) << "and some of them by an edge axis";
   EXPECT_LT(boxed, pairs) << "some pairs (edge axes, ties) are the general path's";
   EXPECT_GT(with_contacts, pairs / 2);
 }
@@ -119,7 +126,7 @@ RC_GTEST_PROP(BoxPath, AnswersAsTheGeneralPathToTheBitOnEveryBoxFamily, ()) {
   const test::PosedCase posed(c.file);
   RC_PRE(posed.built);
   const PathAnswers answers = both_paths(posed.view_a, posed.pose_a, posed.view_b, posed.pose_b);
-  RC_TAG(answers.box_path ? "box path" : "general path");
+  RC_TAG(!answers.box_path ? "general path" : answers.kind == AxisKind::edge_edge ? "box path, edge" : "box path, face");
   RC_ASSERT(same_bits(answers.boxed, answers.general));
 }
 
@@ -127,10 +134,13 @@ struct TwoBoxes {
   Hull a, b;
   TwoBoxes(const std::vector<Vec3>& points_a, const std::vector<Vec3>& points_b)
       : a(*build_hull(points_a).hull), b(*build_hull(points_b).hull) {}
-  bool boxed(const Pose& pose_b) const {
-    BoxFaceAxis axis;
-    return clear_box_face_axis(PosedHull(a.view(), Pose{Vec3::Zero(), Quat::Identity()}),
-                               PosedHull(b.view(), pose_b), axis);
+  bool boxed(const Pose& pose_b) const { return axis(pose_b).has_value(); }
+  // The kind of axis the box path answers with, if it answers.
+  std::optional<AxisKind> axis(const Pose& pose_b) const {
+    BoxAxis axis;
+    if (!clear_box_axis(PosedHull(a.view(), Pose{Vec3::Zero(), Quat::Identity()}), PosedHull(b.view(), pose_b), axis))
+      return std::nullopt;
+    return axis.sat.kind;
   }
 };
 
@@ -146,12 +156,50 @@ TEST(BoxPath, LeavesParallelFacesToTheGeneralPath) {
   EXPECT_FALSE(boxes.boxed({Vec3(0.1, 0.2, 1.49), test::about(Vec3::UnitZ(), 0.3)}));
 }
 
-// A box balanced on an edge across A's rim, and edges crossing: an edge
-// axis, or one tied with a face within F3's bias.
-TEST(BoxPath, LeavesEdgeAxesToTheGeneralPath) {
+// Two cubes crossing at their edges, clear of every face: the box path
+// answers with the edge pair's axis, as the general path does.
+TEST(BoxPath, TakesTwoBoxesCrossingAtTheirEdges) {
   const TwoBoxes boxes(test::box_points(1, 1, 1), test::box_points(1, 1, 1));
   const Quat crossed = test::about(Vec3::UnitX(), M_PI / 4) * test::about(Vec3::UnitY(), M_PI / 4);
-  EXPECT_FALSE(boxes.boxed({Vec3(1.9, 0, 1.9), crossed}));
+  const Pose pose_b{Vec3(1.9, 0, 1.9), crossed};
+  EXPECT_EQ(boxes.axis(pose_b), AxisKind::edge_edge);
+  const PathAnswers answers = both_paths(boxes.a.view(), {}, boxes.b.view(), pose_b);
+  EXPECT_TRUE(same_bits(answers.boxed, answers.general));
+  EXPECT_EQ(answers.boxed.contact_count, 1);
+}
+
+// Three pairs the property above found, each answered wrongly once a guard
+// of the edge axis was taken out: two slabs corner to corner whose edge
+// axis is shallower than a face by about F3's bias (the slack's size lies
+// between the span and twice it); two needles whose edge axes nearly tie;
+// a slab touching a box to one ulp along an edge axis, 1.2e4 out.
+TEST(BoxPath, LeavesEdgeAxesNearATieOrTouchingToTheGeneralPath) {
+  using test::box_points;
+  const CaseFile cases[] = {
+      test::make_case(box_points(0.5, 0.25, 5e-4),
+                      {Vec3::Zero(), Quat(-0.9510565162951535, -0.2795163884141089, 0.09317212947136964,
+                                          -0.09317212947136964)},
+                      box_points(0.5, 0.3, 5e-4),
+                      {Vec3(0.869067665091304, 0.5504815547707751, 0.4960974509333098),
+                       Quat(0.2811230512809393, 0.029421030531509185, 0.9584692743592336, -0.037958966137696226)}),
+      test::make_case(box_points(5e-4, 5e-4, 0.5),
+                      {Vec3::Zero(), Quat(0.9914448613738104, 0.07535933221454362, 0.07535933221454362,
+                                          -0.07535933221454362)},
+                      box_points(5e-4, 5e-4, 0.5),
+                      {Vec3(-0.06778189255376812, 0.0800051254010513, -0.48376676715271333),
+                       Quat(0.027555819016946245, -0.820964158457984, 0.561013277854387, 0.1025798685744765)}),
+      test::make_case(box_points(5800, 5200, 100),
+                      {Vec3::Zero(), Quat(0.6018150231520484, 0.3571606579421926, -0.7143213158843852, 0)},
+                      box_points(5000, 3500, 5),
+                      {Vec3(627.7016167021605, 2158.299074397845, -11982.668301354697),
+                       Quat(-0.6626200482157376, -0.600500508226451, 0.4003336721509673, 0.20016683607548366)})};
+  for (const CaseFile& c : cases) {
+    const test::PosedCase posed(c);
+    ASSERT_TRUE(posed.built);
+    const PathAnswers answers = both_paths(posed.view_a, posed.pose_a, posed.view_b, posed.pose_b);
+    EXPECT_FALSE(answers.box_path) << format_case(c);
+    EXPECT_TRUE(same_bits(answers.boxed, answers.general)) << format_case(c);
+  }
 }
 
 // Two faces of the incident box equally turned to the reference face: F11
