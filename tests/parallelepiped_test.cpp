@@ -92,6 +92,30 @@ TEST(Parallelepiped, OtherLoopsAreNot) {
   EXPECT_FALSE(parallelepiped(*build_hull(test::tetrahedron_points()).hull));
 }
 
+// The verdicts are remembered per hull, found by the address of its
+// vertices: a caller that moves a corner in place between two calls gets
+// the verdict of the new corners, not the one remembered.
+TEST(Parallelepiped, AVerdictIsWorkedOutAgainWhenTheVerticesChangeInPlace) {
+  const Hull box = *build_hull(test::box_points(1, 2, 3)).hull;
+  std::vector<mfz_vec3> corners(box.view().vertices, box.view().vertices + box.vertex_count());
+  mfz_hull view = box.view();
+  view.vertices = corners.data();
+  const Pose pose{Vec3(1, 2, 3), test::about(Vec3(1, 1, 0).normalized(), 0.7)};
+  const auto verdicts = [&] {
+    const PosedHull hull(view, pose);
+    return std::make_pair(is_parallelepiped(hull), is_box(hull));
+  };
+  EXPECT_EQ(verdicts(), std::make_pair(true, true));
+  // Sheared in place: still a parallelepiped, no longer a box.
+  for (mfz_vec3& p : corners) p.x += 0.3 * p.z;
+  EXPECT_EQ(verdicts(), std::make_pair(true, false));
+  // A corner pulled out by 1e-6: neither.
+  corners[0].x *= 1 + 1e-6;
+  EXPECT_EQ(verdicts(), std::make_pair(false, false));
+  corners.assign(box.view().vertices, box.view().vertices + box.vertex_count());
+  EXPECT_EQ(verdicts(), std::make_pair(true, true));
+}
+
 Vec3 random_direction(std::mt19937& random) {
   std::normal_distribution<double> gauss;
   return Vec3(gauss(random), gauss(random), gauss(random)).normalized();

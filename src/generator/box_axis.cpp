@@ -22,27 +22,15 @@ struct BoxFrame {
   double half[3];
 };
 
-// Whether the hull is a box, and its frame in the world: a parallelepiped
-// (geometry/parallelepiped.h: a cube's loops, each zone's edges parallel,
-// so each face is a parallelogram) whose three edge vectors are square to
-// tol::kBoxSquareness in the hull's own frame, where a box's corners are
-// exact. Square edges make the cosines between two boxes' directions their
-// whole rotation, and make each face beside a box's incident face run
-// straight into the box.
+// Whether the hull is a box (geometry/parallelepiped.h: a parallelepiped
+// whose three edge vectors are square to tol::kBoxSquareness in the hull's
+// own frame, where a box's corners are exact), and its frame in the world.
+// Square edges make the cosines between two boxes' directions their whole
+// rotation, and make each face beside a box's incident face run straight
+// into the box.
 bool box_frame(const PosedHull& hull, BoxFrame& box) {
-  if (!is_parallelepiped(hull)) return false;
+  if (!is_box(hull)) return false;
   const HullTopology* topology = hull.topology();
-  Vec3 edge[3];
-  for (int z = 0; z < 3; ++z) {
-    const TopologyEdge& e = topology->edge(topology->zone_edge(z, 0));
-    edge[z] = hull.local_vertex(e.v1) - hull.local_vertex(e.v0);
-  }
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 &x = edge[i], &y = edge[(i + 1) % 3];
-    const double cosine = x.dot(y);
-    if (!(cosine * cosine <= tol::kBoxSquareness * tol::kBoxSquareness * x.squaredNorm() * y.squaredNorm()))
-      return false;
-  }
   for (int z = 0; z < 3; ++z) {
     const TopologyEdge& e = topology->edge(topology->zone_edge(z, 0));
     const Vec3 world = hull.world_vertex(e.v1) - hull.world_vertex(e.v0);

@@ -204,6 +204,7 @@ class TopologyStore {
   Entry* recent_[2] = {nullptr, nullptr};  ///< the entries last returned, newest first
   size_t head_ = 0;
   uint64_t lap_ = 1;
+  uint64_t serials_ = 0;  ///< the last serial a built topology took
 };
 
 // The topology is written straight into the ring at the head. Should the
@@ -216,6 +217,7 @@ const HullTopology* TopologyStore::build(const mfz_hull& hull, uint64_t hash, En
   HullTopology* t = reinterpret_cast<HullTopology*>(claim(bytes));
   entry = {};
   t->vertex_count_ = vertices, t->face_count_ = faces, t->step_count_ = steps, t->edge_count_ = steps / 2;
+  t->serial_ = ++serials_;
   t->loops_at_ = faces + 1;
   t->across_at_ = t->loops_at_ + steps;
   t->edges_at_ = t->across_at_ + steps;

@@ -63,6 +63,11 @@ class HullTopology {
   /// The k-th edge (0-3, ascending) of zone z (0-2, in order of their first
   /// edges); only when has_cube_loops().
   int zone_edge(int z, int k) const { return cube_zones_[z][k]; }
+  /// A number no other topology built on this thread has (a topology moved
+  /// within the store keeps it): what a memo of a hull's shape keys its
+  /// loops by (geometry/parallelepiped.h), since a topology's address may
+  /// hold another's once it is evicted.
+  uint64_t serial() const { return serial_; }
 
  private:
   friend class TopologyStore;
@@ -74,6 +79,7 @@ class HullTopology {
   /// (at 0) and loops come first, as the hull gave them.
   int32_t loops_at_, across_at_, edges_at_, neighbour_offsets_at_, neighbours_at_, size_words_;
   int32_t cube_zones_[3][4];
+  uint64_t serial_;
 };
 
 /// The topology of `hull` from this thread's store, built on a miss; nullptr
