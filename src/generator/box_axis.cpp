@@ -30,10 +30,8 @@ struct BoxFrame {
 // into the box.
 bool box_frame(const PosedHull& hull, BoxFrame& box) {
   if (!is_box(hull)) return false;
-  const HullTopology* topology = hull.topology();
   for (int z = 0; z < 3; ++z) {
-    const TopologyEdge& e = topology->edge(topology->zone_edge(z, 0));
-    const Vec3 world = hull.world_vertex(e.v1) - hull.world_vertex(e.v0);
+    const Vec3 world = zone_direction(hull, z);
     const double length = world.norm();
     box.axis[z] = world / length;
     box.half[z] = 0.5 * length;
@@ -227,11 +225,7 @@ bool decide_face_axis(const PosedHull& a, const PosedHull& b, const BoxPair& p, 
 // the normal the way B is pushed out less, and each hull's supporting edge
 // of its zone.
 void decide_edge_axis(const PosedHull& a, const PosedHull& b, int zone_a, int zone_b, BoxAxis& out) {
-  const auto first_edge = [](const PosedHull& hull, int zone) {
-    const TopologyEdge& e = hull.topology()->edge(hull.topology()->zone_edge(zone, 0));
-    return Vec3(hull.world_vertex(e.v1) - hull.world_vertex(e.v0));
-  };
-  const Vec3 axis = first_edge(a, zone_a).cross(first_edge(b, zone_b));
+  const Vec3 axis = zone_direction(a, zone_a).cross(zone_direction(b, zone_b));
   const Vec3 unit = axis / axis.norm();
   const Interval ia = a.project(unit), ib = b.project(unit);
   const double b_above = ia.max - ib.min, b_below = ib.max - ia.min;

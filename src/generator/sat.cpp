@@ -216,10 +216,7 @@ SatResult sat_every_pair(const PosedHull& a, const PosedHull& b) {
 void parallelepiped_edge_axes(const PosedHull& a, const PosedHull& b, SatResult& best) {
   const HullTopology &ta = *a.topology(), &tb = *b.topology();
   Vec3 direction_a[3], direction_b[3];
-  for (int z = 0; z < 3; ++z) {
-    const TopologyEdge &x = ta.edge(ta.zone_edge(z, 0)), &y = tb.edge(tb.zone_edge(z, 0));
-    direction_a[z] = world_edge(a, x.v0, x.v1), direction_b[z] = world_edge(b, y.v0, y.v1);
-  }
+  for (int z = 0; z < 3; ++z) direction_a[z] = zone_direction(a, z), direction_b[z] = zone_direction(b, z);
   ParallelepipedPairs pairs;
   for (int za = 0; za < 3; ++za)
     for (int zb = 0; zb < 3; ++zb) pairs.add(za, zb, direction_a[za].cross(direction_b[zb]));
