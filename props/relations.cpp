@@ -104,17 +104,33 @@ double distance_to_hull_of(const Vec3& p, const std::vector<Vec3>& points) {
   return best;
 }
 
-// Each contact of `x` deeper than `depth_tol` lies within `tol` of the region
+// Each contact of `x` deeper than `tol` (see below) lies within `tol` of the region
 // (convex hull) of `y`'s contacts, on both hulls. Regions, not points: where an
 // incident edge runs along a side plane, rounding moves its crossing point
 // along the edge, and both places are right.
+//
+// A contact no deeper than `tol` may be in one run alone: a point that may
+// move by `tol` may move across the reference plane, where the tutorial's
+// last step removes it. B's edge, 2.7e-4 rad off a side plane and as steep
+// as the reference face, crossed both where the side plane meets that face;
+// the world's rounding 2.6e5 out moved the crossing 1.1e-7 along it, 7.2e-10
+// above the face in one frame and 1.03e-7 below in the moved one, a contact
+// 0.29 from the first run's two (h22, rigid-motion, manifuzz fuzz --strict on
+// the built-in, open as O24). Held to the depth tolerance (1e-9 L), this
+// asked for a canonical side of a plane the point lies on. Only beside
+// deeper contacts, which are compared: in a manifold no deeper than `tol`
+// (a slab 1e-6 thick resting on a box, F19) every contact deeper than
+// `depth_tol` is compared still, or none would be.
 bool within_region(const std::vector<Contact>& x, const std::vector<Contact>& y, double tol, double depth_tol,
                    std::string& why) {
   std::vector<Vec3> ya, yb;
   ya.reserve(y.size()), yb.reserve(y.size());
   for (const Contact& c : y) ya.push_back(c.on_a), yb.push_back(c.on_b);
+  double deepest = 0;
+  for (const Contact& c : x) deepest = std::max(deepest, std::abs(c.penetration));
+  const double optional_depth = deepest > tol ? tol : depth_tol;
   for (size_t i = 0; i < x.size(); ++i) {
-    if (std::abs(x[i].penetration) <= depth_tol) continue;
+    if (std::abs(x[i].penetration) <= optional_depth) continue;
     if (y.empty()) {
       why = "one run has contacts, the other none";
       return false;
