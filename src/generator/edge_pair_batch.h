@@ -24,7 +24,8 @@
 namespace mfz {
 
 /// Each of `count` axes (columns x, y, z) divided by its length, which goes
-/// to `length`; an axis of length zero is left as it is. The same bits as
+/// to `length` (where that is zero, the axis bounds nothing and its columns
+/// are not read again). The same bits as
 /// Vec3's norm() and division, (x * x + y * y) + z * z, in vector lanes:
 /// one pair at a time, each waited on its square root and its division,
 /// and that wait was a tenth of an 8-point fuzz execution's SAT (perf on
@@ -44,7 +45,7 @@ class EdgePairBatchOf {
   /// Arc i of A with arc j of B, whose edges' cross product is `axis`:
   /// made the unit axis `axis / |axis|` by project(), the bits SAT's full
   /// measure of the pair divides out, so that the projections here are the
-  /// ones it would make (a zero axis is kept as it is, and bounds nothing).
+  /// ones it would make (a zero axis bounds nothing).
   void add(int i, int j, const Vec3& axis) {
     arc_a_[count_] = i, arc_b_[count_] = j;
     axis_x_[count_] = axis.x(), axis_y_[count_] = axis.y(), axis_z_[count_] = axis.z();
