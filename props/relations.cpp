@@ -149,7 +149,38 @@ struct Tolerances {
   /// How much coarser the transformed run's frame is than the original's:
   /// its extra rounding (a case moved far out, a float profile's rounding).
   double coarser = 0;
+  /// The transformed run's frame's rounding, which `point` holds once.
+  double rounding = 0;
 };
+
+// An edge pair's contact is the two edges' closest points, and where the
+// edges are nearly parallel the frame's rounding of their ends moves that
+// point along them by the rounding over the sine of their angle, as it
+// moves a crossing along an edge grazing a clipping plane; both places are
+// right. So it turns their axis, the edges' cross product, by the rounding
+// over the shorter edge and that sine. A tetrahedron's edge 3.2e-5 rad off
+// B's edge, crossing it at a depth of 3.2e-6, 1.7e7 from the origin (the
+// world's rounding there 2.4e-7), had its contact 9e-6 from the moved
+// run's, past the 1e-6 L the point tolerance held it to, and the tutorial's
+// normal 5.3e-6 from its moved run's, past 1.5e-6 (h23, rigid-motion,
+// manifuzz fuzz --strict on the built-in). The room is for the least
+// axis's own edges, where it is an edge pair.
+struct EdgePairRoom {
+  double point = 0, normal = 0;
+};
+
+EdgePairRoom edge_pair_room(const RelationInput& in, const Tolerances& tol) {
+  if (in.oracles.sat_axes.empty()) return {};
+  const RankedAxis& best = in.oracles.sat_axes[0];
+  if (best.kind != AxisKind::edge_edge) return {};
+  const HullEdge& ea = in.scene.hull_a.edges()[best.feature_a];
+  const HullEdge& eb = in.scene.hull_b.edges()[best.feature_b];
+  const Vec3 a = in.scene.world_a[ea.v1] - in.scene.world_a[ea.v0];
+  const Vec3 b = in.scene.world_b[eb.v1] - in.scene.world_b[eb.v0];
+  const double sine = a.cross(b).norm() / (a.norm() * b.norm());
+  if (!(sine > 0)) return {};
+  return {tol.rounding / sine, tol.rounding / (std::min(a.norm(), b.norm()) * sine)};
+}
 
 // In a frame coarser than the tie tolerance (a float engine's rounding 1e4 L
 // out), another axis within that rounding of the least, pointing another
@@ -255,9 +286,10 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
     return std::nullopt;
   const bool strict = in.level == Level::strict;
   if (strict ? in.oracles.axis_tie : ties.direction) return std::nullopt;
-  if (const double apart = (original.normal - other.normal).norm(); !(apart <= tol.normal)) {
+  const EdgePairRoom room = edge_pair_room(in, tol);
+  if (const double apart = (original.normal - other.normal).norm(); !(apart <= tol.normal + room.normal)) {
     char why[96];
-    std::snprintf(why, sizeof why, "the normals differ by %.3g (tol %.3g)", apart, tol.normal);
+    std::snprintf(why, sizeof why, "the normals differ by %.3g (tol %.3g)", apart, tol.normal + room.normal);
     return std::string(why);
   }
   // The finer ties (features, incident faces, supporting edges) are not
@@ -273,10 +305,12 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
   // for the generator (the float variant, --strict --seed 62: one edge
   // pair's point in one frame, a parallel pair's 0.22 L away in the moved).
   const bool precise = in.profile.precision_epsilon == 0;
+  Tolerances contacts = tol;
+  contacts.point += room.point;
   if ((!strict || !precise) && ties.contacts_open())
-    return ties.feature && precise ? single_contact_in_region(original, other, tol, in.profile.max_contacts)
+    return ties.feature && precise ? single_contact_in_region(original, other, contacts, in.profile.max_contacts)
                                     : std::nullopt;
-  return compare_contacts(original, other, tol, in.profile.max_contacts);
+  return compare_contacts(original, other, contacts, in.profile.max_contacts);
 }
 
 // ---- the transformed cases ----
@@ -287,7 +321,7 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
 Tolerances tolerances_for(const Scene& s, double extra_extent = 0) {
   const double ulps = s.rounding(extra_extent);
   return {tol::kDepth * s.scale + ulps, tol::kRelationPoint * s.scale + ulps, tol::kRelationNormal + ulps / s.shortest_edge,
-          ulps - s.rounding()};
+          ulps - s.rounding(), ulps};
 }
 
 std::optional<Finding> finding_if(const std::string& relation, const std::optional<std::string>& difference) {
