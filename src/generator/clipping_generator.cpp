@@ -520,6 +520,33 @@ bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& ca
   return true;
 }
 
+// O25: an edge of the reference loop too short for the world's rounding to
+// give it a direction gives no side, or one that points anywhere: a sliver
+// face of B, two of its corners 1e-14 apart, 1.6e5 from the origin, lost
+// the side through that edge, and its prism, between two long sides 1e-14
+// rad apart, lay open past it: a point of A's face 9,000 beyond the sliver
+// was a contact, off B's surface (rigid-motion, manifuzz fuzz --strict).
+// The prism is closed there by a cap through the short edge, its normal
+// the bisector of the long edges either side, which the rounding does not
+// turn: at a convex corner the loop lies behind it, as behind a sharp
+// corner's cap. Where those edges run on in one line, their sides bound
+// the prism already.
+bool short_edge_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap) {
+  constexpr double kEdgeOverRounding = 1e3;
+  const int n = loop.size();
+  const Vec3& from = loop[k];
+  const Vec3& to = loop[(k + 1) % n];
+  const double shortest = kEdgeOverRounding * rounding;
+  if (!((to - from).squaredNorm() <= shortest * shortest)) return false;
+  const Vec3 in = from - loop[(k + n - 1) % n], out = loop[(k + 2) % n] - to;
+  if (!(std::min(in.squaredNorm(), out.squaredNorm()) > shortest * shortest)) return false;
+  const Vec3 across = in.normalized() - out.normalized();
+  if (!(across.squaredNorm() > tol::kTie * tol::kTie)) return false;
+  const Vec3 normal = across.normalized();
+  cap = Plane{normal, std::max(normal.dot(from), normal.dot(to))};
+  return true;
+}
+
 double corner_rounding(const ClipFace& reference) {
   const double largest = reference.sides ? reference.sides->largest : largest_coordinate(*reference.polygon);
   return tol::world_rounding(std::max(largest, reference.world_resolution));
@@ -535,6 +562,8 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   const double rounding = tol::world_rounding(std::max(sides.largest, reference.world_resolution));
   for (int k = 0; k < sides.count && sides.cap_count < PrismSides::kMaxCaps; ++k)
     if (sharp_corner_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
+  for (int k = 0; k < sides.count && sides.cap_count < PrismSides::kMaxCaps; ++k)
+    if (short_edge_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
 }
 
 
@@ -587,6 +616,8 @@ bool clip_to_sharp_corner_caps(const ClipFace& reference, ClipPolygon& incident,
   Plane cap;
   for (int k = 0; k < reference.polygon->size(); ++k)
     if (sharp_corner_cap(*reference.polygon, k, rounding, cap) && !clip_cap(cap)) return false;
+  for (int k = 0; k < reference.polygon->size(); ++k)
+    if (short_edge_cap(*reference.polygon, k, rounding, cap) && !clip_cap(cap)) return false;
   return true;
 }
 
