@@ -520,7 +520,7 @@ bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& ca
   return true;
 }
 
-// O25: an edge of the reference loop too short for the world's rounding to
+// F57: an edge of the reference loop too short for the world's rounding to
 // give it a direction gives no side, or one that points anywhere: a sliver
 // face of B, two of its corners 1e-14 apart, 1.6e5 from the origin, lost
 // the side through that edge, and its prism, between two long sides 1e-14
