@@ -294,10 +294,13 @@ double loop_area(const ClipPolygon& loop, const Vec3& normal) {
 
 // F27: the other faces of the incident hull that face the reference face and
 // reach below its plane, each clipped as the incident face is; their points
-// are added to `clipped` (each once). True when one was added.
+// are added to `clipped` (each once). True when one was added. The faces
+// held for the support alone (F58, `support_faces`) are among them whether
+// they face the reference face or not, as F24 clipped them.
 bool add_faces_below_reference(const PosedHull& incident, const int* done, int done_count,
                                const ClipFace& reference, const Plane& reference_plane, const ClippingSteps& steps,
-                               double world_resolution, ClipWorkspace& work, ClipPolygon& clipped) {
+                               double world_resolution, ClipWorkspace& work, ClipPolygon& clipped,
+                               const int* support_faces = nullptr, int support_count = 0) {
   bool added = false;
   // F33: the world's rounding alone made the column a frame's choice. A face
   // 1.1e-6 rad off perpendicular stood 2.3e-10 beside a kept point, 2.1e-4
@@ -370,7 +373,8 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
   incident.turn_face_normals();
   for (int f = 0; f < incident.face_count(); ++f) {
     if (std::find(done, done + done_count, f) != done + done_count) continue;
-    if (!(incident.world_face_normal(f).dot(reference.normal) < -tol::kFacingCosine)) continue;
+    const bool holds_support = std::find(support_faces, support_faces + support_count, f) != support_faces + support_count;
+    if (!holds_support && !(incident.world_face_normal(f).dot(reference.normal) < -tol::kFacingCosine)) continue;
     bool reaches_below = false;
     for (int k = 0; k < incident.face_size(f) && !reaches_below; ++k)
       reaches_below = reference_plane.signed_distance(incident.world_face_point(f, k)) < 0;
@@ -731,7 +735,8 @@ ClippingSteps::ClippingSteps()
 //     face (F1), with a band for edges lying in a side (F23). Then the points
 //     above the reference plane are removed, and tied faces' shared points
 //     are kept once (F19). The incident hull's other faces that reach below
-//     the reference plane are clipped the same way (F27); where the two
+//     the reference plane are clipped the same way (F27), and so are the
+//     faces held for the support alone (F24, F58); where the two
 //     faces are a face of each with equal areas, the reference hull's faces
 //     below the incident face's plane too (F50).
 //  6. Each remaining point is a contact with its own penetration, measured
@@ -932,10 +937,13 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   ClipWorkspace& work = thread_workspace();
   // F11: equally aligned incident faces (a symmetric corner) are all clipped
   // and their contacts joined: picking one would leave the choice to rounding.
+  // F58: those held for the support alone are clipped with F27's faces.
   int incident_faces[kMaxTiedFaces] = {incident.index};
-  const int tied = steps.incident_faces(*incident.hull, flipped ? n : Vec3(-n), incident_faces, kMaxTiedFaces);
+  const Vec3 along = flipped ? n : Vec3(-n);
+  const int tied = steps.incident_faces(*incident.hull, along, incident_faces, kMaxTiedFaces);
+  const int as_parallel = parallel_faces_first(*incident.hull, along, incident_faces, tied);
   Plane reference_plane;
-  if (!clip_incident_faces(reference, incident, incident_faces, tied, world_resolution, work, trace, steps,
+  if (!clip_incident_faces(reference, incident, incident_faces, as_parallel, world_resolution, work, trace, steps,
                            steps.face_polygon, reference_plane))
     return 1;
   ClipPolygon& clipped = work.clipped;
@@ -952,8 +960,9 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   if (other_way > 0 && trace)
     record(trace, "a face of each tied: the reference hull's faces reaching below the incident face's plane",
            work.other_way);
-  if (add_faces_below_reference(*incident.hull, incident_faces, tied, reference, reference_plane, steps,
-                                std::max(resolution, world_resolution), work, clipped) &&
+  if (add_faces_below_reference(*incident.hull, incident_faces, as_parallel, reference, reference_plane, steps,
+                                std::max(resolution, world_resolution), work, clipped, incident_faces + as_parallel,
+                                tied - as_parallel) &&
       trace)
     record(trace, "with the other faces reaching below the reference plane, clipped the same way", clipped);
   // More than the ABI holds: the outline of the contacts and the deepest of

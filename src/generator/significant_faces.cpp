@@ -113,4 +113,24 @@ int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* ou
   return count;
 }
 
+// F58: a face held for the support alone may reach far past the support,
+// where its points add depth and nothing to the region's span, as F27's
+// faces' points do in a column already held; clipped as an incident face,
+// every such point was kept, and as F27's face (the same face triangulated,
+// whose triangles hold fewer of the support) none was. So it is clipped as
+// F27's faces are, in either form.
+int parallel_faces_first(const PosedHull& hull, const Vec3& direction, int* faces, int count) {
+  double most_parallel = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < count; ++i) most_parallel = std::max(most_parallel, hull.world_face_normal(faces[i]).dot(direction));
+  // In place and in order, without std::stable_partition's buffer, which
+  // may come from the heap.
+  int first = 0;
+  for (int i = 0; i < count; ++i) {
+    if (!(hull.world_face_normal(faces[i]).dot(direction) >= most_parallel - tol::kTie)) continue;
+    std::rotate(faces + first, faces + i, faces + i + 1);
+    ++first;
+  }
+  return first;
+}
+
 }  // namespace mfz

@@ -22,4 +22,10 @@ int significant_face(const PosedHull& hull, const Vec3& direction, int& support,
 /// equals; at most `capacity` into `out`. Returns the count.
 int tied_significant_faces(const PosedHull& hull, const Vec3& direction, int* out, int capacity);
 
+/// Orders `faces` (stably) so that those as parallel to `direction` as the
+/// most parallel of them come first, and returns how many they are; the
+/// rest are held for the support alone (F24), and are clipped as F27's
+/// faces are (F58).
+int parallel_faces_first(const PosedHull& hull, const Vec3& direction, int* faces, int count);
+
 }  // namespace mfz
