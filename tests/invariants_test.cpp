@@ -441,5 +441,60 @@ TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {
   }
 }
 
+// A tetrahedron's bottom edge lies flat 0.01 deep in a slab's top face and
+// runs out past its rim at x = 1: the face axis ties with the edge pair of
+// that edge and the rim, along z, and the region is the edge's part over
+// the face, 0.5 wide. Under a float profile the pair's one point, where the
+// edge crosses the rim, is an answer the contract lets a generator give
+// (h24: the float variant's edge pair, its normal the face's to the bit
+// once rounded to float); in double, a normal that is the face's to the bit
+// is the face's contact. The edge's inner end alone, the deepest vertex on
+// no edge of the slab, is asked to span the region either way.
+class EdgeFlatOnAFaceAcrossItsRim : public ::testing::Test {
+ protected:
+  EdgeFlatOnAFaceAcrossItsRim()
+      : run_(test::run_builtin(test::make_case(
+            box_points(1, 1, 0.25), {},
+            {{0.5, 0, 0.24}, {1.5, 0, 0.24}, {1.0, 0.4, 0.6}, {0.8, -0.2, 0.9}}, {}))) {}
+
+  CheckStatus spans_with_one_contact(const Vec3& on_b, double precision_epsilon) const {
+    mfz_manifold m = run_.manifold;
+    m.contact_count = 1;
+    m.contacts[0].point_on_b = to_abi(on_b);
+    m.contacts[0].point_on_a = to_abi(Vec3(on_b + Vec3(0, 0, 0.01)));
+    m.contacts[0].penetration = -0.01;
+    Scene scene = run_.scene;
+    scene.precision_epsilon = precision_epsilon;
+    Profile profile;
+    profile.precision_epsilon = precision_epsilon;
+    for (const InvariantCheck& c : check_manifold(scene, run_.oracles, 0, m, profile).checks)
+      if (c.name == "spans-contact-region") return c.status;
+    return CheckStatus::skipped;
+  }
+
+  static constexpr double kFloat = 0x1p-23, kDouble = 0;
+  CaseRun run_;
+};
+
+TEST_F(EdgeFlatOnAFaceAcrossItsRim, TheBuiltInsTwoEndsSpanTheRegion) {
+  ASSERT_EQ(to_vec(run_.manifold.normal), Vec3::UnitZ());
+  ASSERT_NEAR(run_.manifold.penetration, -0.01, 1e-12);
+  EXPECT_GE(run_.manifold.contact_count, 2);
+  EXPECT_EQ(spans_with_one_contact(Vec3(0.75, 0, 0.24), kDouble), CheckStatus::pass);
+}
+
+TEST_F(EdgeFlatOnAFaceAcrossItsRim, UnderAFloatProfileTheEdgePairsOnePointAtTheRimIsNotAskedToSpanTheRegion) {
+  EXPECT_EQ(spans_with_one_contact(Vec3(1, 0, 0.24), kFloat), CheckStatus::skipped);
+}
+
+TEST_F(EdgeFlatOnAFaceAcrossItsRim, InDoubleOnePointAtTheRimIsAFaceContactAndFailsToSpanTheRegion) {
+  EXPECT_EQ(spans_with_one_contact(Vec3(1, 0, 0.24), kDouble), CheckStatus::fail);
+}
+
+TEST_F(EdgeFlatOnAFaceAcrossItsRim, TheDeepestVertexAloneFailsToSpanTheRegionUnderEitherPrecision) {
+  EXPECT_EQ(spans_with_one_contact(Vec3(0.5, 0, 0.24), kFloat), CheckStatus::fail);
+  EXPECT_EQ(spans_with_one_contact(Vec3(0.5, 0, 0.24), kDouble), CheckStatus::fail);
+}
+
 }  // namespace
 }  // namespace mfz
