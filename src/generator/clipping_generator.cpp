@@ -428,7 +428,17 @@ int add_faces_below_incident_face(const ClipFace& reference, ClipFace& incident,
   const ClipPolygon& reference_loop = *reference.polygon;
   const double area = loop_area(loop, incident.normal), reference_area = loop_area(reference_loop, reference.normal);
   const double largest = std::max({largest_coordinate(loop), largest_coordinate(reference_loop), world_resolution});
-  const double rounding = tol::world_rounding(largest) * (loop_perimeter(loop) + loop_perimeter(reference_loop));
+  // F59: the areas' room is their perimeters times the world's rounding,
+  // and never less than their perimeters times 1e-8 of the hulls' span, so
+  // that the frame does not decide the tie: the rounding alone, 1.4e8 from
+  // the origin, joined two triangles 5e7 in area and 0.087 apart that it
+  // held apart at the origin, and the far run had a contact 1,996 from the
+  // case's (far-from-origin, manifuzz fuzz --strict, open as O26). 1e-8 of
+  // the span is 70 times the rounding 1e4 L out.
+  constexpr double kAreaTieOverSpan = 1e-8;
+  const double span = std::max(reference.hull->span(), incident.hull->span());
+  const double room = std::max(tol::world_rounding(largest), kAreaTieOverSpan * span);
+  const double rounding = room * (loop_perimeter(loop) + loop_perimeter(reference_loop));
   if (!(std::abs(area - reference_area) <= tol::kTie * std::max(area, reference_area) + rounding)) return 0;
   incident.polygon = &loop;
   incident.world_resolution = world_resolution;
