@@ -227,6 +227,12 @@ expect_one_line_error 'hull B .* not resolved' -- "$manifuzz" replay "$scratch/u
   echo "pose A  0 0 0  1 0 0 0"; echo "hull B"; echo "v 2e72 0 0"; echo "v 0 0 0"; echo "v 0 0 3e78"; echo "v 0 1e70 0"
   echo "pose B  0 0 0  1 0 -0.1 0"; } >"$scratch/huge.case"
 expect_one_line_error 'hull A: .*coordinate of 3e\+78 is past the limit of 1e\+30' -- "$manifuzz" replay "$scratch/huge.case"
+# Below the diameter limit (h25: hulls 1e-107 across, whose edges' cross
+# products underflow, lost the exact oracle its edge axes).
+{ echo "manifuzz-case 1"; echo "hull A"; echo "v 0 0 0"; echo "v 2e-107 0 0"; echo "v 0 2e-107 0"; echo "v 0 0 2e-107"
+  echo "pose A  0 0 0  1 0 0 0"; echo "hull B"; echo "v 0 0 0"; echo "v 2e-107 0 0"; echo "v 0 2e-107 0"; echo "v 0 0 2e-107"
+  echo "pose B  0 0 0  1 0 -0.1 0"; } >"$scratch/minute.case"
+expect_one_line_error 'hull A has a diameter of 2.83e-107, below the limit of 1e-30' -- "$manifuzz" replay "$scratch/minute.case"
 awk '/^pose B/ {print "pose B  0 2e30 0.9  1 0 0 0"; next} {print}' "$good" >"$scratch/far_position.case"
 expect_one_line_error 'position has a coordinate of 2e\+30, past the limit' -- "$manifuzz" replay "$scratch/far_position.case"
 { echo "manifuzz-case 1"; echo "hull A"; for i in $(seq 1 1100); do echo "v $i $((i * i % 97)) $((i % 13))"; done

@@ -75,7 +75,13 @@ SceneBuild make_scene(const CaseFile& c) {
                   scene.world_extent / scene.scale, tol::kFarthestFrame / tol::world_rounding(1), tol::kFarthestFrame);
     return {std::nullopt, why};
   }
-  for (const auto& [name, hull] : {std::pair{"A", &scene.hull_a}, std::pair{"B", &scene.hull_b}})
+  for (const auto& [name, hull] : {std::pair{"A", &scene.hull_a}, std::pair{"B", &scene.hull_b}}) {
+    if (hull->diameter() < tol::kSmallestHullDiameter) {
+      char why[120];
+      std::snprintf(why, sizeof why, "hull %s has a diameter of %.3g, below the limit of %g", name, hull->diameter(),
+                    tol::kSmallestHullDiameter);
+      return {std::nullopt, why};
+    }
     if (hull->diameter() < tol::kSmallestHullOverRounding * tol::world_rounding(scene.world_extent)) {
       char why[200];
       std::snprintf(why, sizeof why,
@@ -84,6 +90,7 @@ SceneBuild make_scene(const CaseFile& c) {
                     name, hull->diameter(), tol::kSmallestHullOverRounding, scene.world_extent);
       return {std::nullopt, why};
     }
+  }
   return {std::move(scene), {}};
 }
 

@@ -36,6 +36,15 @@ inline constexpr double kFarthestFrame = 1e-6;
 /// (manifuzz fuzz on the built-in: a false on-surface of 0.58 L).
 inline constexpr double kSmallestHullOverRounding = 1e3;
 
+/// Input limit: each hull's diameter must be at least this. The squared
+/// length of a cross product of two edges is a fourth power of them, and it
+/// underflows below about 1e-77: two hulls 1e-107 across lost the exact
+/// oracle its edge axes, its depth came out 9% more than the overlap along
+/// EPA's direction, and the built-in failed depth-within-epa-bounds (h25,
+/// manifuzz fuzz on the float variant). At 1e-30 an eighth power stays a
+/// normal double, as at the coordinate limit below.
+inline constexpr double kSmallestHullDiameter = 1e-30;
+
 /// Input limit: no coordinate of a hull's point or a pose's position may
 /// exceed this in magnitude. A generator squares lengths of products of
 /// coordinates: the squared length of a cross product of two edges is a
