@@ -428,6 +428,31 @@ TEST_F(PlatesSunkThroughEachOther, TheFourOfLargestAreaPassFourPickedOneAtATimeD
             CheckStatus::fail);
 }
 
+// EPA's depth within its tolerance over the exact depth, and the
+// generator's within depth-exact's under it: each is right by its own
+// check, so EPA's bound holds the depth to both tolerances (h26: 1.2e15
+// from the origin, a depth 0.215 under the exact one against an EPA 1.114e-6
+// L over it failed by 1.12e-6 L against 1.11e-6 L). Past both, it fails.
+TEST(InvariantVerdict, EpasLowerBoundHoldsTheDepthToEpasToleranceAndDepthExactsTogether) {
+  const CaseRun run = test::run_builtin(test::make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                                        {Vec3(0, 0, 0.9), Quat::Identity()}));
+  ASSERT_TRUE(run.oracles.ccd.epa_ok);
+  const double exact = run.oracles.exact.signed_depth;
+  const double tol_epa = run.scene.length_tolerance(tol::kEpa), tol_depth = run.scene.length_tolerance(tol::kDepth);
+  const auto epa_bounds = [&](double depth, double epa_depth) {
+    OracleAnswers oracles = run.oracles;
+    oracles.ccd.epa_depth = epa_depth;
+    mfz_manifold m = run.manifold;
+    m.penetration = -depth;
+    for (const InvariantCheck& c : check_manifold(run.scene, oracles, 0, m).checks)
+      if (c.name == "depth-within-epa-bounds") return c.status;
+    return CheckStatus::skipped;
+  };
+  EXPECT_EQ(epa_bounds(exact - 0.9 * tol_depth, exact + tol_epa - 0.01 * tol_depth), CheckStatus::pass);
+  EXPECT_EQ(epa_bounds(exact - 0.9 * tol_depth, exact + tol_epa), CheckStatus::pass);
+  EXPECT_EQ(epa_bounds(exact - 3 * tol_depth, exact + tol_epa - 0.01 * tol_depth), CheckStatus::fail);
+}
+
 TEST(InvariantVerdict, TouchingCasesAcceptEitherCollidingAnswer) {
   for (int colliding : {0, 1}) {
     const CaseRun run = test::run_builtin(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1),
