@@ -17,6 +17,14 @@ namespace {
 
 using test::box_points;
 
+// The status of the check named `name` in `v`; a test failure where there is none.
+CheckStatus status_in(const Verdict& v, const std::string& name) {
+  for (const InvariantCheck& c : v.checks)
+    if (c.name == name) return c.status;
+  ADD_FAILURE() << "no check named " << name;
+  return CheckStatus::skipped;
+}
+
 class InvariantFires : public ::testing::Test {
  protected:
   // B, a unit cube, rests 0.1 deep on the 4 x 4 x 1 slab A: n = +z, four contacts.
@@ -27,11 +35,7 @@ class InvariantFires : public ::testing::Test {
   mfz_manifold good() const { return run_.manifold; }
 
   CheckStatus status_of(const std::string& name, const mfz_manifold& m) const {
-    const Verdict v = check_manifold(run_.scene, run_.oracles, 0, m);
-    for (const InvariantCheck& c : v.checks)
-      if (c.name == name) return c.status;
-    ADD_FAILURE() << "no check named " << name;
-    return CheckStatus::skipped;
+    return status_in(check_manifold(run_.scene, run_.oracles, 0, m), name);
   }
 
   void expect_fires(const std::string& name, const mfz_manifold& wrong) const {
@@ -295,9 +299,7 @@ class ReducedManifold : public ::testing::Test {
   CheckStatus spans(const mfz_manifold& m, int max_contacts) const {
     Profile profile;
     profile.max_contacts = max_contacts;
-    for (const InvariantCheck& c : check_manifold(run_.scene, run_.oracles, 0, m, profile).checks)
-      if (c.name == "spans-contact-region") return c.status;
-    return CheckStatus::skipped;
+    return status_in(check_manifold(run_.scene, run_.oracles, 0, m, profile), "spans-contact-region");
   }
 
   CaseRun run_;
@@ -411,9 +413,7 @@ class PlatesSunkThroughEachOther : public ::testing::Test {
   CheckStatus spans(const mfz_manifold& m) const {
     Profile profile;
     profile.max_contacts = 4;
-    for (const InvariantCheck& c : check_manifold(run_.scene, run_.oracles, 0, m, profile).checks)
-      if (c.name == "spans-contact-region") return c.status;
-    return CheckStatus::skipped;
+    return status_in(check_manifold(run_.scene, run_.oracles, 0, m, profile), "spans-contact-region");
   }
 
   CaseRun run_;
@@ -433,20 +433,16 @@ TEST_F(PlatesSunkThroughEachOther, TheFourOfLargestAreaPassFourPickedOneAtATimeD
 // check, so EPA's bound holds the depth to both tolerances (h26: 1.2e15
 // from the origin, a depth 0.215 under the exact one against an EPA 1.114e-6
 // L over it failed by 1.12e-6 L against 1.11e-6 L). Past both, it fails.
-TEST(InvariantVerdict, EpasLowerBoundHoldsTheDepthToEpasToleranceAndDepthExactsTogether) {
-  const CaseRun run = test::run_builtin(test::make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
-                                                        {Vec3(0, 0, 0.9), Quat::Identity()}));
-  ASSERT_TRUE(run.oracles.ccd.epa_ok);
-  const double exact = run.oracles.exact.signed_depth;
-  const double tol_epa = run.scene.length_tolerance(tol::kEpa), tol_depth = run.scene.length_tolerance(tol::kDepth);
+TEST_F(InvariantFires, EpasLowerBoundHoldsTheDepthToEpasToleranceAndDepthExactsTogether) {
+  ASSERT_TRUE(run_.oracles.ccd.epa_ok);
+  const double exact = run_.oracles.exact.signed_depth;
+  const double tol_epa = run_.scene.length_tolerance(tol::kEpa), tol_depth = run_.scene.length_tolerance(tol::kDepth);
   const auto epa_bounds = [&](double depth, double epa_depth) {
-    OracleAnswers oracles = run.oracles;
+    OracleAnswers oracles = run_.oracles;
     oracles.ccd.epa_depth = epa_depth;
-    mfz_manifold m = run.manifold;
+    mfz_manifold m = good();
     m.penetration = -depth;
-    for (const InvariantCheck& c : check_manifold(run.scene, oracles, 0, m).checks)
-      if (c.name == "depth-within-epa-bounds") return c.status;
-    return CheckStatus::skipped;
+    return status_in(check_manifold(run_.scene, oracles, 0, m), "depth-within-epa-bounds");
   };
   EXPECT_EQ(epa_bounds(exact - 0.9 * tol_depth, exact + tol_epa - 0.01 * tol_depth), CheckStatus::pass);
   EXPECT_EQ(epa_bounds(exact - 0.9 * tol_depth, exact + tol_epa), CheckStatus::pass);
@@ -492,9 +488,7 @@ class EdgeFlatOnAFaceAcrossItsRim : public ::testing::Test {
     scene.precision_epsilon = precision_epsilon;
     Profile profile;
     profile.precision_epsilon = precision_epsilon;
-    for (const InvariantCheck& c : check_manifold(scene, run_.oracles, 0, m, profile).checks)
-      if (c.name == "spans-contact-region") return c.status;
-    return CheckStatus::skipped;
+    return status_in(check_manifold(scene, run_.oracles, 0, m, profile), "spans-contact-region");
   }
 
   static constexpr double kFloat = 0x1p-23, kDouble = 0;

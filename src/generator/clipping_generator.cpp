@@ -437,9 +437,9 @@ int add_faces_below_incident_face(const ClipFace& reference, ClipFace& incident,
   // the span is 70 times the rounding 1e4 L out.
   constexpr double kAreaTieOverSpan = 1e-8;
   const double span = std::max(reference.hull->span(), incident.hull->span());
-  const double room = std::max(tol::world_rounding(largest), kAreaTieOverSpan * span);
-  const double rounding = room * (loop_perimeter(loop) + loop_perimeter(reference_loop));
-  if (!(std::abs(area - reference_area) <= tol::kTie * std::max(area, reference_area) + rounding)) return 0;
+  const double per_length = std::max(tol::world_rounding(largest), kAreaTieOverSpan * span);
+  const double room = per_length * (loop_perimeter(loop) + loop_perimeter(reference_loop));
+  if (!(std::abs(area - reference_area) <= tol::kTie * std::max(area, reference_area) + room)) return 0;
   incident.polygon = &loop;
   incident.world_resolution = world_resolution;
   incident.scratch = &work.scratch;
