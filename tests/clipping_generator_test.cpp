@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "case/case_file.h"
 #include "case/scene.h"
@@ -630,6 +632,38 @@ TEST(ClippingGenerator, ATriangulatedPatchMetAgainFromAnotherTriangleIsClippedOn
     }
   }
   EXPECT_GT(contacts, 500);
+}
+
+// The faces of the coplanar patch around `face`, ascending.
+std::vector<int> patch_members(const PosedHull& hull, int face) {
+  int loop[kMaxPatchLoop], faces[kMaxPatchFaces], members = 0;
+  patch_loop(hull, face, loop, members, faces);
+  std::vector<int> sorted = members > 1 ? std::vector<int>(faces, faces + members) : std::vector<int>{face};
+  std::sort(sorted.begin(), sorted.end());
+  return sorted;
+}
+
+// F60: a patch is every face joined to its first by flat steps, so it is
+// the same faces from whichever of them it is gathered, and no face is in
+// two patches. Gathered against its first face's normal, a 32-gon prism's
+// fanned caps, their triangles' normals wobbling by 0.65 and 0.8 of the
+// coplanar sine, gave patches that depended on the triangle they started
+// from (O28's disc of 43 triangles gave 43 patches of 29 to 31 corners).
+TEST(CoplanarPatch, IsTheSameFacesFromWhicheverOfThemItIsGathered) {
+  int shared = 0;
+  for (const double wobble : {0.0, 0.65 * tol::kCoplanarSine, 0.8 * tol::kCoplanarSine, 2 * tol::kCoplanarSine}) {
+    const Hull fans = wobbled_fans(*build_hull(prism_points(32, 0.1, 0.05)).hull, wobble);
+    const PosedHull hull(fans.view(), Pose{Vec3(0.3, -0.2, 0.1), about(Vec3(1, 2, 3), 0.4)});
+    for (int f = 0; f < hull.face_count(); ++f) {
+      const std::vector<int> patch = patch_members(hull, f);
+      ASSERT_TRUE(std::binary_search(patch.begin(), patch.end(), f));
+      for (const int g : patch) {
+        EXPECT_EQ(patch_members(hull, g), patch) << "wobble " << wobble << ", faces " << f << " and " << g;
+        shared += g != f;
+      }
+    }
+  }
+  EXPECT_GT(shared, 1000);  // the caps' triangles do share patches
 }
 
 // A square pyramid whose base, of area 1, lies 0.9 deep in a frustum whose

@@ -179,14 +179,15 @@ class ClippedPatches {
   int count_ = 0;
 };
 
-// The faces of the patches ClippedPatches holds whose faces all have one
-// normal, to the bit (a face split into triangles as a mesh arrives): met
-// again, such a face is passed by before its patch is gathered. Gathered
-// from any of its faces, the patch is the same faces (each is asked of the
-// same normal), so its loop is the kept one turned, and ClippedPatches
-// would pass it by after the gather. A triangulated 64-gon cap met F27
-// 61 times a call, and each gathered the whole cap again: 64-gon
-// cylinders with triangulated faces spent three quarters of a call there.
+// The faces of the patches ClippedPatches holds: met again, such a face is
+// passed by before its patch is gathered. Gathered from any of its faces,
+// the patch is the same faces (coplanar_patch.h), so its loop is the kept
+// one turned, and ClippedPatches would pass it by after the gather. A
+// triangulated 64-gon cap met F27 61 times a call, and each gathered the
+// whole cap again: 64-gon cylinders with triangulated faces spent three
+// quarters of a call there. Until F60 a patch was gathered against the
+// normal of the face it started from, and only a patch whose faces shared
+// one normal to the bit could be passed by.
 class ClippedPatchFaces {
  public:
   bool has(int face) const { return face < kFaces && ((marks_[face / 64] >> (face % 64)) & 1u); }
@@ -194,14 +195,10 @@ class ClippedPatchFaces {
     if (any_) std::fill(marks_, marks_ + kFaces / 64, uint64_t{0});
     any_ = false;
   }
-  // The patch's faces, when they share the first one's normal, and not
-  // past the gather's room (a patch that fills it may gather otherwise
-  // from another face).
-  void mark_if_one_normal(const PosedHull& hull, const int* faces, int count) {
+  // The patch's faces, when not past the gather's room (a patch that fills
+  // it may gather otherwise from another face).
+  void mark(const int* faces, int count) {
     if (count >= kMaxPatchFaces) return;
-    const Vec3 normal = hull.world_face_normal(faces[0]);
-    for (int i = 1; i < count; ++i)
-      if (hull.world_face_normal(faces[i]) != normal) return;
     for (int i = 0; i < count; ++i)
       if (faces[i] < kFaces) marks_[faces[i] / 64] |= uint64_t{1} << (faces[i] % 64), any_ = true;
   }
@@ -386,7 +383,7 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
       const int size = patch_loop(incident, f, corners, members, work.patch_faces);
       if (members > 1 && size > 0) {
         if (patches.holds(corners, size)) continue;
-        if (patches.keep(corners, size)) clipped_faces.mark_if_one_normal(incident, work.patch_faces, members);
+        if (patches.keep(corners, size)) clipped_faces.mark(work.patch_faces, members);
       }
       loop_points(incident, corners, size, polygon);
     } else {

@@ -1,7 +1,9 @@
 #pragma once
 /// \file
-/// Coplanar patches: the largest set of faces around a face that lie in its
-/// plane (normals within tol::kCoplanarSine), and the patch's boundary loop.
+/// Coplanar patches: the faces joined to a face by flat steps (each face's
+/// normal within tol::kCoplanarSine of the face it is reached from), the
+/// same faces from whichever of them the patch is gathered (F60), and the
+/// patch's boundary loop, which runs along edges of the polyhedron.
 #include "generator/clip_polygon.h"
 #include "geometry/posed_hull.h"
 
