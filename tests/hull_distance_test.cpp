@@ -78,6 +78,36 @@ TEST(SignedDistance, APointPastASharpTipOrEdgeKeepsItsDistanceWhereTheVerticesDe
   }
 }
 
+// h27: a sheet 6.5e8 long whose two wide faces meet at a knife edge 1.5e-5
+// rad apart; a point in their planes, 3.6 beyond the knife edge beside the
+// tip, is within 5.4e-5 of every plane, so the vertices decide, and their
+// GJK must not take a simplex of no volume (a support point met again,
+// its triple product rounded to -0.006) for one that holds the point: it
+// measured 0.
+TEST(SignedDistance, APointBesideANeedlesKnifeEdgeIsAsFarAsTheEdgeWhereTheVerticesDecide) {
+  const Vec3 tip(-650377000, 0, 0.4), far_corner(26920, -8541.6, -60000);
+  const Hull sheet = *build_hull({{0.5, 0.85, -0.4}, {0, 0, 0}, tip, far_corner}).hull;
+  // The wide face holding the knife edge from the tip to the far corner,
+  // and the way out of the sheet across that edge, in the face's plane.
+  int wide = -1;
+  for (int f = 0; f < sheet.face_count(); ++f)
+    if (std::abs(sheet.face_normal(f).y()) > 0.9 && (wide < 0 || sheet.face_normal(f).y() > 0)) wide = f;
+  ASSERT_GE(wide, 0);
+  const Vec3 normal = sheet.face_normal(wide), edge = (far_corner - tip).normalized();
+  Vec3 out = normal.cross(edge).normalized();
+  if (out.dot(Vec3(0.5, 0.85, -0.4) - tip) > 0) out = -out;
+  int measured = 0;
+  for (const double along : {1000.0, 2000.0, 4648.0, 6000.0})
+    for (const double beyond : {0.5, 1.0, 3.6, 6.5}) {
+      const Vec3 p = tip + along * edge + beyond * out;
+      const double by_faces = distance_by_every_face(sheet, p);
+      if (!(by_faces > 0.4 * beyond)) continue;
+      EXPECT_NEAR(signed_distance(sheet, {}, p), by_faces, 1e-3) << along << " along, " << beyond << " beyond";
+      ++measured;
+    }
+  EXPECT_GE(measured, 12);
+}
+
 // signed_distance keeps 256 faces' heights and takes the others' again: on
 // a hull of 596 faces, points just inside and just outside the faces past
 // the 256th are as far as every face measured one by one says.
