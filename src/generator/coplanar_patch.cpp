@@ -53,7 +53,7 @@ class PatchMembers {
 // five times and, with the vertices renumbered, overflowed the clip
 // (vertex-order, manifuzz fuzz --strict, F60, open as O28). A chain of
 // faces each within the sine of the last bends by at most the sine per
-// face crossed: a patch of kMaxPatchFaces bends by under 3e-9 of its size.
+// face crossed (tolerances.h, kCoplanarSine, says what that allows).
 void gather_patch(const PosedHull& hull, PatchMembers& members) {
   for (int i = 0; i < members.size(); ++i) {
     const int f = members[i], n = hull.face_size(f);
