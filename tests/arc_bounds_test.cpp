@@ -120,7 +120,8 @@ TEST(ArcBounds, ClaimABoundOnlyWhereEverySampleOfTheArcClearsIt) {
 TEST(ArcBounds, AKnifeEdgesArcIsNotTakenForItsEnds) {
   const Hull wedge = *build_hull(knife_wedge()).hull;
   const mfz_hull view = wedge.view();
-  const PosedHull posed(view, Pose{Vec3::Zero(), Quat::Identity()});
+  const Pose pose{Vec3::Zero(), Quat::Identity()};
+  const PosedHull posed(view, pose);
   const EdgeArcs arcs(posed);
   ASSERT_TRUE(arcs.complete());
   double margin[kMaxArcs];

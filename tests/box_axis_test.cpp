@@ -138,8 +138,9 @@ struct TwoBoxes {
   // The kind of axis the box path answers with, if it answers.
   std::optional<AxisKind> axis(const Pose& pose_b) const {
     BoxAxis axis;
-    if (!clear_box_axis(PosedHull(a.view(), Pose{Vec3::Zero(), Quat::Identity()}), PosedHull(b.view(), pose_b), axis))
-      return std::nullopt;
+    const mfz_hull view_a = a.view(), view_b = b.view();
+    const Pose pose_a{Vec3::Zero(), Quat::Identity()};
+    if (!clear_box_axis(PosedHull(view_a, pose_a), PosedHull(view_b, pose_b), axis)) return std::nullopt;
     return axis.sat.kind;
   }
 };

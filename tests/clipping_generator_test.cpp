@@ -653,7 +653,9 @@ TEST(CoplanarPatch, IsTheSameFacesFromWhicheverOfThemItIsGathered) {
   int shared = 0;
   for (const double wobble : {0.0, 0.65 * tol::kCoplanarSine, 0.8 * tol::kCoplanarSine, 2 * tol::kCoplanarSine}) {
     const Hull fans = wobbled_fans(*build_hull(prism_points(32, 0.1, 0.05)).hull, wobble);
-    const PosedHull hull(fans.view(), Pose{Vec3(0.3, -0.2, 0.1), about(Vec3(1, 2, 3), 0.4)});
+    const mfz_hull view = fans.view();
+    const Pose pose{Vec3(0.3, -0.2, 0.1), about(Vec3(1, 2, 3), 0.4)};
+    const PosedHull hull(view, pose);
     for (int f = 0; f < hull.face_count(); ++f) {
       const std::vector<int> patch = patch_members(hull, f);
       ASSERT_TRUE(std::binary_search(patch.begin(), patch.end(), f));

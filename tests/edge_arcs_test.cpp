@@ -158,7 +158,8 @@ TEST(EdgeArcs, ColumnsArePaddedWithZerosToAWholeFourAndRowsNameNoArcPastTheLast)
   const mfz_hull view_large = large.view(), view_tetrahedron = tetrahedron.view(), view_other = other.view();
   const Pose pose{Vec3(0.5, -1, 2), test::about(Vec3(1, 2, 3), 0.4)};
   const PosedHull posed_large(view_large, pose), posed_tetrahedron(view_tetrahedron, pose);
-  const PosedHull posed_other(view_other, {Vec3(0, 0, 1), test::about(Vec3(0, 1, 1), 0.3)});
+  const Pose pose_other{Vec3(0, 0, 1), test::about(Vec3(0, 1, 1), 0.3)};
+  const PosedHull posed_other(view_other, pose_other);
   static EdgeArcs arcs;  // one object, as SAT's workspace keeps it
   arcs.build(posed_large);
   arcs.build(posed_tetrahedron);
@@ -264,8 +265,8 @@ TEST(EdgeArcs, TheCrossingArcsHoldEveryPairTheGaussMapTestKeeps) {
 TEST(EdgeArcs, ARowAmongKeptArcsFindsWhatItFindsAmongAllLessThoseLeftOut) {
   const Hull a = *build_hull(test::sphere_points(32, 224u)).hull, b = *build_hull(test::sphere_points(32, 352u)).hull;
   const mfz_hull va = a.view(), vb = b.view();
-  const PosedHull posed_a(va, {Vec3::Zero(), Quat::Identity()});
-  const PosedHull posed_b(vb, {Vec3(0, 0, 1.2), test::about(Vec3(1, 2, 3), 0.7)});
+  const Pose pose_a{Vec3::Zero(), Quat::Identity()}, pose_b{Vec3(0, 0, 1.2), test::about(Vec3(1, 2, 3), 0.7)};
+  const PosedHull posed_a(va, pose_a), posed_b(vb, pose_b);
   const EdgeArcs arcs_a(posed_a), arcs_b(posed_b);
   ASSERT_TRUE(arcs_a.complete() && arcs_b.complete());
   bool left_out[kMaxArcs];
@@ -562,14 +563,16 @@ TEST(SatPruning, ACubesCornerOnALargePrismsRimBoundedInLanesGivesTheAxisEveryPai
                          found_turned).normalized();
     const Vec3 towards = found_at.normalized();
     const auto apart = [&](double distance) {
-      const PosedHull posed_prism(view_prism, Pose{distance * towards, turned});
+      const Pose pose_prism{distance * towards, turned};
+      const PosedHull posed_prism(view_prism, pose_prism);
       return run_sat_every_pair(posed_cube, posed_prism).separated;
     };
     // Where the prism first touches, coming in along `towards`, by halving.
     double in = 0, out = 4;
     for (int step = 0; step < 40; ++step) (apart(0.5 * (in + out)) ? out : in) = 0.5 * (in + out);
     for (const double pressed : {1e-3, 1e-2}) {
-      const PosedHull posed_prism(view_prism, Pose{(in - pressed) * towards, turned});
+      const Pose pose_prism{(in - pressed) * towards, turned};
+      const PosedHull posed_prism(view_prism, pose_prism);
       const SatResult bounded = run_sat(posed_cube, posed_prism), every = run_sat_every_pair(posed_cube, posed_prism);
       ASSERT_EQ(bounded.separated, every.separated) << "trial " << trial;
       if (every.separated) continue;

@@ -23,8 +23,9 @@ TEST(EdgePairBatch, APairIsProjectedOntoItsUnitAxisToTheBitsOfProject) {
   const Hull a = *build_hull(test::sphere_points(32, 7)).hull;
   const Hull b = *build_hull(test::sphere_points(40, 8)).hull;
   const mfz_hull view_a = a.view(), view_b = b.view();
-  const PosedHull posed_a(view_a, {Vec3(1e5, -3e4, 7), test::about(Vec3(1, 2, 3).normalized(), 0.7)});
-  const PosedHull posed_b(view_b, {Vec3(1e5 + 0.3, -3e4, 7.2), test::about(Vec3(-2, 1, 0.5).normalized(), 2.1)});
+  const Pose pose_a{Vec3(1e5, -3e4, 7), test::about(Vec3(1, 2, 3).normalized(), 0.7)};
+  const Pose pose_b{Vec3(1e5 + 0.3, -3e4, 7.2), test::about(Vec3(-2, 1, 0.5).normalized(), 2.1)};
+  const PosedHull posed_a(view_a, pose_a), posed_b(view_b, pose_b);
   std::mt19937 random(20261128);
   std::uniform_int_distribution<int> vertex_a(0, posed_a.vertex_count() - 1), vertex_b(0, posed_b.vertex_count() - 1);
   EdgePairBatch batch;

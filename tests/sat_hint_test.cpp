@@ -145,7 +145,8 @@ TEST(SatHint, TheSamePairCalledAgainStartsFromItsLastAxis) {
   ASSERT_TRUE(cold.separated);
   // First apart along the axis SAT from nothing does not take.
   const Vec3 first_offset = std::abs(cold.normal.x()) > 0.5 ? Vec3(0, 3, 0) : Vec3(3, 0, 0);
-  const SatResult first = run_sat(a, PosedHull(boxes.b, {first_offset, Quat::Identity()}));
+  const Pose first_pose{first_offset, Quat::Identity()};
+  const SatResult first = run_sat(a, PosedHull(boxes.b, first_pose));
   ASSERT_TRUE(first.separated);
   const SatResult again = run_sat(a, PosedHull(boxes.b, diagonal));
   EXPECT_TRUE(again.separated);

@@ -77,6 +77,12 @@ void project_onto_axes(const double* xs, const double* ys, const double* zs, int
 
 class PosedHull {
  public:
+  // It keeps references to the hull and the pose: a temporary of either
+  // would dangle once the statement ends (a test's hull posed by a Pose{}
+  // written in the call passed under g++ and shared no patch under clang).
+  PosedHull(mfz_hull&&, const Pose&) = delete;
+  PosedHull(const mfz_hull&, Pose&&) = delete;
+  PosedHull(mfz_hull&&, Pose&&) = delete;
   PosedHull(const mfz_hull& hull, const Pose& pose)
       : hull_(hull), pose_(pose), rotation_(pose.orientation.toRotationMatrix()),
         cached_(hull.vertex_count <= kCachedVertices) {
