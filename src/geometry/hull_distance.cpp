@@ -71,7 +71,7 @@ double distance_to_vertex_hull(const Hull& hull, const Vec3& p) {
       // point already in the simplex made one of no volume whose triple
       // product rounded to -0.006, and a point 3.6 outside a needle 6.5e8
       // long, beside its tip, measured 0: the contact region took it in and
-      // was 4,648 wide where the first-touching slab held 40, and the
+      // was 4,648 wide where the first-touching slab held 43, and the
       // built-in's one point at the tip missed its centroid (h27,
       // spans-contact-region, manifuzz fuzz --strict, open as O27).
       const Vec3 corners[4] = {simplex[0], simplex[1], simplex[2], s};
