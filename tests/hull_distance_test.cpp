@@ -85,8 +85,8 @@ TEST(SignedDistance, APointPastASharpTipOrEdgeKeepsItsDistanceWhereTheVerticesDe
 // its triple product rounded to -0.006) for one that holds the point: it
 // measured 0.
 TEST(SignedDistance, APointBesideANeedlesKnifeEdgeIsAsFarAsTheEdgeWhereTheVerticesDecide) {
-  const Vec3 tip(-650377000, 0, 0.4), far_corner(26920, -8541.6, -60000);
-  const Hull sheet = *build_hull({{0.5, 0.85, -0.4}, {0, 0, 0}, tip, far_corner}).hull;
+  const Vec3 tip(-650377000, 0, 0.4), far_corner(26920, -8541.6, -60000), thick_corner(0.5, 0.85, -0.4);
+  const Hull sheet = *build_hull({thick_corner, {0, 0, 0}, tip, far_corner}).hull;
   // The wide face holding the knife edge from the tip to the far corner,
   // and the way out of the sheet across that edge, in the face's plane.
   int wide = -1;
@@ -95,7 +95,7 @@ TEST(SignedDistance, APointBesideANeedlesKnifeEdgeIsAsFarAsTheEdgeWhereTheVertic
   ASSERT_GE(wide, 0);
   const Vec3 normal = sheet.face_normal(wide), edge = (far_corner - tip).normalized();
   Vec3 out = normal.cross(edge).normalized();
-  if (out.dot(Vec3(0.5, 0.85, -0.4) - tip) > 0) out = -out;
+  if (out.dot(thick_corner - tip) > 0) out = -out;
   int measured = 0;
   for (const double along : {1000.0, 2000.0, 4648.0, 6000.0})
     for (const double beyond : {0.5, 1.0, 3.6, 6.5}) {
