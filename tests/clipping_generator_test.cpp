@@ -668,6 +668,52 @@ TEST(CoplanarPatch, IsTheSameFacesFromWhicheverOfThemItIsGathered) {
   EXPECT_GT(shared, 1000);  // the caps' triangles do share patches
 }
 
+// F61: a fanned 300-gon cap is one patch of 298 triangles from whichever
+// of them it is gathered, its loop the cap's 300 corners. With room for 256
+// faces the gather stopped at a wedge of the cap, which the triangle it
+// started from chose.
+TEST(CoplanarPatch, AFannedCapOf300SidesIsOnePatchOfEveryTriangle) {
+  const Hull fans = fan_triangulated(*build_hull(prism_points(300, 2, 0.5)).hull);
+  const mfz_hull view = fans.view();
+  const Pose pose{Vec3(0.3, -0.2, 0.1), about(Vec3(1, 2, 3), 0.4)};
+  const PosedHull hull(view, pose);
+  int caps = 0;
+  for (int f = 0; f < hull.face_count(); ++f) {
+    if (std::abs(std::abs(fans.face_normal(f).z()) - 1) > 1e-12) continue;  // a side
+    int loop[kMaxPatchLoop], members = 0;
+    ASSERT_EQ(patch_loop(hull, f, loop, members), 300) << "face " << f;
+    EXPECT_EQ(members, 298) << "face " << f;
+    ++caps;
+  }
+  EXPECT_EQ(caps, 2 * 298);
+}
+
+// The hulls the harness takes (1,024 points at most) have faces of up to
+// 1,023 corners, and two faces clip to as many points as they have corners
+// together. With room for 512, a box on a 508-gon face and two 256-gon
+// prisms cap to cap were refused (status 1); a 1,000-gon face, as an
+// incident face or a reference face, gave no contact at all (F61, found by
+// hand: the families make faces of 64 corners at most).
+TEST(ClippingGenerator, FacesOfUpToAThousandCornersAreClippedNotRefused) {
+  const Hull base = *build_hull(test::pyramid_points(1000, 3, -2)).hull;  // the base on top, facing +z
+  const Hull box = *build_hull(test::box_points(0.5, 0.5, 0.5)).hull;
+  const Hull cap = *build_hull(prism_points(300, 2, 0.5)).hull;
+  struct Pair {
+    const Hull &a, &b;
+    Vec3 at;
+    int contacts;  // a box's four corners; a polygon of caps' crossings reduced to the ABI's 64
+  };
+  for (const Pair& pair : {Pair{base, box, Vec3(0.2, 0.1, 0.45), 4}, Pair{box, base, Vec3(-0.2, -0.1, -0.45), 4},
+                           Pair{cap, cap, Vec3(0.3, 0.1, 0.95), MFZ_MAX_CONTACTS}}) {
+    const mfz_hull va = pair.a.view(), vb = pair.b.view();
+    const mfz_pose pa = Pose{}.to_abi(), pb = Pose{pair.at, Quat::Identity()}.to_abi();
+    mfz_manifold out{};
+    ASSERT_EQ(generate_clipping_manifold(va, pa, vb, pb, out, nullptr, ClippingSteps{}), 0) << pair.at.transpose();
+    EXPECT_EQ(out.contact_count, pair.contacts) << pair.at.transpose();
+    EXPECT_NEAR(out.penetration, -0.05, 1e-12) << pair.at.transpose();
+  }
+}
+
 // A square pyramid whose base, of area 1, lies 0.9 deep in a frustum whose
 // top, of area 1 too, ties with it for the axis: a face of each along z,
 // the same overlap, the same area. The frustum's sloping sides reach below

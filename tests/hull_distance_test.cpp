@@ -20,6 +20,19 @@ TEST(SignedDistance, IsTheDistanceToTheNearestFaceOutside) {
   EXPECT_NEAR(signed_distance(cube, {}, Vec3(2, 2, 0)), std::sqrt(2.0), 1e-15);
 }
 
+// A point 1 below a 1,000-gon face is 1 from the hull wherever it stands
+// under the face. With room for 512 corners the face was measured by the
+// first 512 of its loop, a half disc: below the other half, within its
+// depth of the half disc's chord (where the vertices' GJK is not asked), a
+// point was as far as the chord, 8% further (F61's hulls).
+TEST(SignedDistance, APointBelowAnyPartOfAThousandGonFaceIsAsFarAsItsDepth) {
+  const Hull hull = *build_hull(test::pyramid_points(1000, 3, 2)).hull;
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 below(0.5 * std::cos(M_PI * k / 4), 0.5 * std::sin(M_PI * k / 4), -1);
+    EXPECT_NEAR(signed_distance(hull, {}, below), 1, 1e-12) << below.transpose();
+  }
+}
+
 // Two faces of a hull folded by 1e-14 along a diagonal: a point on the one
 // (its plane says 0) lies 1e-13 outside the other's plane by rounding. Its
 // distance is that rounding, not the 0.3 to the other face's polygon: the

@@ -116,6 +116,20 @@ TEST(HullGap, AVertexAboveAFaceIsItsHeight) {
   EXPECT_NEAR(gap.on_a.z(), 0.5, 1e-14);
 }
 
+// A tetrahedron 0.1 below a 1,000-gon face, under either half of it: the
+// gap is 0.1. With room for 512 corners the face was measured by half of
+// its loop, and under the other half the gap ran to its chord (F61's
+// hulls).
+TEST(HullGap, AVertexBelowAnyPartOfAThousandGonFaceIsItsDepth) {
+  const std::vector<Vec3> pyramid = test::pyramid_points(1000, 3, 2);
+  const std::vector<Vec3> tip_up = {{0, 0, 0}, {-0.2, -0.2, -0.3}, {0.3, -0.1, -0.3}, {0, 0.3, -0.3}};
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 at(1.5 * std::cos(M_PI * k / 4), 1.5 * std::sin(M_PI * k / 4), -0.1);
+    const Scene s = scene_of(test::make_case(pyramid, {}, tip_up, {at, Quat::Identity()}));
+    EXPECT_NEAR(hull_gap(s).distance, 0.1, 1e-12) << at.transpose();
+  }
+}
+
 TEST(ClosestBetweenSegments, ParallelAndSkewAndDegenerate) {
   Vec3 p, q;
   closest_between_segments(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5, -1, 1), Vec3(0.5, 1, 1), p, q);

@@ -1,5 +1,6 @@
 #include "test_support.h"
 
+#include <cmath>
 #include <filesystem>
 #include <random>
 
@@ -20,6 +21,14 @@ std::vector<Vec3> sphere_points(int count, unsigned seed) {
 std::vector<Vec3> box_points(double hx, double hy, double hz) { return props::box_corners(hx, hy, hz); }
 
 std::vector<Vec3> tetrahedron_points() { return {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}}; }
+
+std::vector<Vec3> pyramid_points(int sides, double radius, double apex_z) {
+  std::vector<Vec3> points;
+  for (int k = 0; k < sides; ++k)
+    points.push_back(Vec3(radius * std::cos(2 * M_PI * k / sides), radius * std::sin(2 * M_PI * k / sides), 0));
+  points.push_back(Vec3(0, 0, apex_z));
+  return points;
+}
 
 Quat about(const Vec3& axis, double angle) { return Quat(Eigen::AngleAxisd(angle, axis.normalized())); }
 

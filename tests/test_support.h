@@ -19,6 +19,9 @@ std::vector<Vec3> box_points(double hx, double hy, double hz);
 std::vector<Vec3> sphere_points(int count, unsigned seed);
 /// A regular tetrahedron's four corners around the origin.
 std::vector<Vec3> tetrahedron_points();
+/// A pyramid: a regular `sides`-gon of circumradius `radius` in z = 0, its
+/// apex at (0, 0, apex_z).
+std::vector<Vec3> pyramid_points(int sides, double radius, double apex_z);
 /// A unit quaternion for `angle` radians about `axis`.
 Quat about(const Vec3& axis, double angle);
 

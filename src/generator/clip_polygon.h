@@ -10,8 +10,13 @@
 
 namespace mfz {
 
-/// Room for an incident face and one extra vertex per side plane.
-inline constexpr int kMaxPolygonVertices = 512;
+/// Room for an incident face and one extra vertex per side plane, for any
+/// two faces of hulls the harness takes (case/case_file.h: at most 1,024
+/// points, so a face has at most 1,023 corners and two faces clip to at
+/// most 2,046 points). At 512, two 256-gon prisms cap to cap were refused
+/// (status 1) as more than the clip could hold (F61, found by hand: no
+/// family made a face of more than 64 corners).
+inline constexpr int kMaxPolygonVertices = 2048;
 
 /// The plane `normal . x = offset`; its inside is `normal . x <= offset`.
 /// Left unset when declared (as Vec3 is): the reference prism's kept sides
@@ -42,7 +47,7 @@ class ClipPolygon {
     return true;
   }
   /// Takes `other`'s points: only the ones in use, not the whole capacity
-  /// (12 KiB), which a clip pass per side plane would otherwise copy.
+  /// (50 KiB), which a clip pass per side plane would otherwise copy.
   void take(const ClipPolygon& other) {
     std::copy(other.points_.begin(), other.points_.begin() + other.size_, points_.begin());
     std::copy(other.crossing_.begin(), other.crossing_.begin() + other.size_, crossing_.begin());

@@ -126,11 +126,14 @@ void coplanar_patch(const PosedHull& hull, int face, ClipPolygon& out) {
   loop_points(hull, loop, patch_loop(hull, face, loop, members), out);
 }
 
+// From the loop's vertex numbers, not a polygon of its points: SAT asks
+// for it, and a polygon of kMaxPolygonVertices points on the stack is 50 KB.
 double patch_area(const PosedHull& hull, int face) {
-  ClipPolygon loop;
-  coplanar_patch(hull, face, loop);
+  int loop[kMaxPatchLoop], members = 0;
+  const int size = patch_loop(hull, face, loop, members);
   Vec3 twice = Vec3::Zero();
-  for (int k = 0; k < loop.size(); ++k) twice += loop[k].cross(loop[(k + 1) % loop.size()]);
+  for (int k = 0; k < size; ++k)
+    twice += hull.world_vertex(loop[k]).cross(hull.world_vertex(loop[(k + 1) % size]));
   return 0.5 * std::abs(twice.dot(hull.world_face_normal(face)));
 }
 

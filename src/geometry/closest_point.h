@@ -6,10 +6,12 @@
 
 namespace mfz {
 
-/// The longest face loop the distance queries copy onto the stack; a longer
-/// face is measured by its first this many vertices (the hulls built here
-/// have far fewer per face).
-inline constexpr int kMaxLoopOnStack = 512;
+/// The longest face loop the distance queries copy onto the stack: every
+/// vertex of a hull the harness takes (at most 1,024 points). A longer face,
+/// handed in through the ABI, is measured by its first this many vertices.
+/// At 512 the base of a 1,000-gon pyramid was measured as half of itself
+/// (F61's hulls).
+inline constexpr int kMaxLoopOnStack = 1024;
 
 /// The point of segment [a, b] closest to p (a degenerate segment is a).
 Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b);
