@@ -34,6 +34,9 @@ const std::vector<Quat>& cube_symmetries();
 
 /// Every hull family's name, in the order the generator picks them from.
 const std::vector<std::string>& hull_family_names();
+/// The hull families drawn only where `--family` names them (wide-face:
+/// a pyramid on a polygon of 65 to 520 corners; slow against itself).
+const std::vector<std::string>& named_only_family_names();
 /// Every placement family's name.
 const std::vector<std::string>& placement_names();
 
@@ -41,7 +44,8 @@ const std::vector<std::string>& placement_names();
 rc::Gen<std::vector<Vec3>> hull_points(const std::string& family);
 /// `--family`'s value: comma-separated hull family names or groups
 /// (`boxes`: the cube and the box families, which a box-only generator such
-/// as ODE's dBoxBox takes; `hulls`: every family). nullopt and a one-line
+/// as ODE's dBoxBox takes; `hulls`: every family but those drawn only where
+/// named). nullopt and a one-line
 /// `error` for a name that is neither.
 std::optional<std::vector<std::string>> hull_families_named(const std::string& text, std::string& error);
 

@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <string>
+
 #include "families.h"
 #include "harness/invariants.h"
 #include "geometry/tolerances.h"
@@ -21,6 +25,33 @@ RC_GTEST_PROP(Placements, TouchingCasesTouch, ()) {
   const ExactDepth exact = exact_depth(s, rank_sat_axes(s));
   RC_TAG(c.overlap, c.placement);
   RC_ASSERT(std::abs(exact.signed_depth) <= s.length_tolerance(tol::kTouching));
+}
+
+// The wide-face family makes the faces the others never do (theirs have 64
+// corners at most): a base of 65 to 520 corners, which hulls of up to 1,024
+// points have (F61: the built-in refused a box on a 508-gon face). It is
+// drawn only where named: among every family's names, or under `hulls`, a
+// pair of them would cost the suite up to a second a case.
+TEST(HullFamilies, WideFaceMakesABaseOfMoreCornersThanAnyOtherFamilyAndOnlyWhereNamed) {
+  std::string error;
+  ASSERT_TRUE(hull_families_named("wide-face", error)) << error;
+  const auto every = *hull_families_named("hulls", error);
+  EXPECT_EQ(std::count(every.begin(), every.end(), "wide-face"), 0);
+  const auto& names = hull_family_names();
+  EXPECT_EQ(std::count(names.begin(), names.end(), "wide-face"), 0);
+  const rc::Gen<std::vector<Vec3>> wide = hull_points("wide-face");
+  rc::Random random(2026);
+  int widest = 0, narrowest = 1 << 30;
+  for (int k = 0; k < 10; ++k) {
+    const HullBuild built = build_hull(wide(random.split(), k).value());
+    ASSERT_TRUE(built.hull.has_value());
+    int corners = 0;
+    for (int f = 0; f < built.hull->face_count(); ++f) corners = std::max(corners, built.hull->face_size(f));
+    widest = std::max(widest, corners), narrowest = std::min(narrowest, corners);
+  }
+  EXPECT_GE(narrowest, 65);
+  EXPECT_LE(widest, 520);
+  EXPECT_GT(widest, 256);  // ten draws reach past the clip's old room of 512 for two such faces
 }
 
 }  // namespace
