@@ -254,7 +254,7 @@ expect_one_line_error "unknown generator 'bulet'" -- "$manifuzz" replay --genera
 expect_one_line_error "unknown family 'spheres'" -- "$manifuzz" check --family spheres --cases 5
 expect 0 'families cube box slab needle anisotropic-box' -- "$manifuzz" check --family boxes --cases 20 --seed 3 --out "$scratch/none"
 # A family drawn only where named: faces of 65 to 520 corners (F61).
-expect 0 'families wide-face cube tetrahedron' -- "$manifuzz" check --strict --family wide-face,cube,tetrahedron --cases 12 --seed 5 --out "$scratch/none"
+expect 0 'families wide-face cube tetrahedron' -- "$manifuzz" check --strict --family wide-face,cube,tetrahedron --cases 6 --seed 5 --out "$scratch/none"
 if [ -f "$plugin_dir/libmanifuzz_peer_ode_box.so" ]; then
   expect 0 'manifuzz check: 100 cases' -- "$manifuzz" check --generator ode-box --family boxes --only finite --cases 100 --seed 3 --out "$scratch/none"
   expect 1 'VIOLATION refused ' -- "$manifuzz" replay --generator ode-box "$source_dir/corpus/tetrahedron_tip_in_face.case"
