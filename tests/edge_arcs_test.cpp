@@ -520,7 +520,7 @@ TEST(SatPruning, RimsThatMeetAtTheCapsNormalGiveTheCapsAxisAsEveryPairDoes) {
 
 // The same on hulls too large to cache their vertices, which bound edge
 // pairs by balls and climbs: the rim pairs along the caps' normal are
-// dropped there too, before any bound, as no bound tells their overlap, the
+// dropped there too, before any climb, as no bound tells their overlap, the
 // cap contact's depth, from the best. Bounded only, a 70-gon prism on a
 // 71-gon prism measured 19,741 pairs in full, and two 257-gon prisms cap to
 // cap about 66,000, each projecting 514 vertices (516 ms a call; F61's

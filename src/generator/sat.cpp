@@ -146,15 +146,16 @@ bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, 
 // tilt, short of F3's bias: the pair could not beat it); the other way the
 // overlap is at least the depth, which the faces of A - B attain. SAT has
 // measured or bounded every face before the edge pairs, so such a pair
-// changes nothing, and it is dropped before it is projected or bounded. A
-// cylinder's rim edges against the other cylinder's rim all meet at the
-// caps' normals: in a grown fuzz corpus of 2,700 inputs, 61% of the pairs
-// SAT projected were these, and its replay took 1.81-1.86 s where it took
-// 2.00-2.04. Large hulls bounded such pairs by balls and climbs only, and
-// a pair along a cap's normal has the cap contact's depth there, which no
-// bound tells from the best: two 257-gon prisms cap to cap measured 66,000
-// rim pairs in full, each a projection of 514 turned vertices, and a call
-// took 516 ms (F61's hulls; 7 ms since, 17 ms with the pair's last axis). Random 8-point hulls, whose arcs seldom meet at an end, take
+// changes nothing, and it is dropped before it is projected or climbed
+// from. A cylinder's rim edges against the other cylinder's rim all meet
+// at the caps' normals: in a grown fuzz corpus of 2,700 inputs, 61% of the
+// pairs SAT projected were these, and its replay took 1.81-1.86 s where it
+// took 2.00-2.04. Large hulls bounded such pairs by balls and climbs only,
+// and a pair along a cap's normal has the cap contact's depth there, which
+// no bound tells from the best: two 257-gon prisms cap to cap measured
+// 66,000 rim pairs in full, each a projection of 514 turned vertices, and
+// a call took 516 ms (F61's hulls; 7 ms since, 17 ms with the pair's last
+// axis). Random 8-point hulls, whose arcs seldom meet at an end, take
 // 2.9% more instructions a call; skipping the test on pairs of 16
 // vertices in all left them at 2.7%, so the cost is in how the compiler
 // now lays out SAT, not in the test, and the test stays for every pair.

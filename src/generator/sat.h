@@ -63,8 +63,9 @@ SatResult run_sat(const PosedHull& a, const PosedHull& b);
 SatResult run_sat_with_hint(const PosedHull& a, const PosedHull& b, const AxisHint& hint);
 /// How many edge pairs the thread's last SAT call that reached its edge
 /// pairs measured in full, both hulls projected onto their axis: what the
-/// Gauss test, the arc ends and the bounds leave (none for two
-/// parallelepipeds, whose nine axes are measured apart). For tests.
+/// Gauss test, the arc ends and the bounds leave. Two parallelepipeds, whose
+/// nine axes are measured apart, and a call that ends on a face leave the
+/// count of the call before. For tests.
 int edge_pairs_measured_in_full();
 /// Every axis measured in full and every edge pair tried: what the pruning
 /// and the bounds must agree with.

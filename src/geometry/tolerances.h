@@ -201,8 +201,8 @@ inline constexpr double kBoxIncidentLead = 1e-6;
 /// it bends by at most 1e-11 of its size per face crossed: below
 /// on-surface's 1e-9 L unless a hundred faces in a row each turn by the
 /// whole sine the same way (1e-8 at the most faces a patch gathers, 1,024,
-/// since F61), which no case has shown; a triangulated face's triangles share their normal
-/// exactly. A cosine test cannot say this: 1 - cos underflows.
+/// since F61), which no case has shown; a triangulated face's triangles
+/// share their normal exactly. A cosine test cannot say this: 1 - cos underflows.
 inline constexpr double kCoplanarSine = 1e-11;
 /// Generator: another face of the incident hull faces the reference face
 /// (F27) when the cosine of their normals is below minus this. A face
