@@ -88,6 +88,22 @@ CaseFile cylinder_on_cylinder(Random& random) {
   return c;
 }
 
+// Two of one cylinder stacked cap on cap and turned alike, as a column of
+// barrels stands: B a little off A's axis, sunk a little into its cap.
+// Every rim edge of one meets every rim edge of the other at the caps'
+// normal on the Gauss map, and each side edge is parallel to the other's.
+CaseFile cylinder_on_its_twin(Random& random) {
+  const double radius = uniform(random, 0.3, 1.5), half_height = uniform(random, 0.2, 1);
+  CaseFile c;
+  c.points_a = c.points_b = cylinder_points(64, radius, half_height);
+  const Quat yaw(Eigen::AngleAxisd(uniform(random, 0, 2 * M_PI), Vec3::UnitZ()));
+  const double sunk = uniform(random, 0.001, 0.05) * half_height;
+  c.pose_a = {Vec3::Zero(), yaw};
+  c.pose_b = {Vec3(uniform(random, -0.3, 0.3) * radius, uniform(random, -0.3, 0.3) * radius, 2 * half_height - sunk),
+              yaw};
+  return c;
+}
+
 template <class Draw>
 BenchFamily family(const std::string& name, bool boxes, int pairs, unsigned seed, Draw&& draw) {
   Random random(seed);
@@ -124,6 +140,7 @@ std::vector<BenchFamily> bench_families(int pairs, bool large) {
   BenchFamily fans{"64-gon cylinders triangulated", false, families.back().scenes};
   for (Scene& s : fans.scenes) s.hull_a = fan_triangulated(s.hull_a), s.hull_b = fan_triangulated(s.hull_b);
   families.push_back(std::move(fans));
+  families.push_back(family("64-gon cylinders stacked alike", false, pairs, 6, cylinder_on_its_twin));
   families.push_back(family("apart", false, pairs, 5, [](Random& r) { return cloud_pair(r, 32, 1.05, 2); }));
   return families;
 }

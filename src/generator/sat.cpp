@@ -8,6 +8,7 @@
 
 #include "generator/coplanar_patch.h"
 #include "generator/arc_bounds.h"
+#include "generator/arc_end_pairs.h"
 #include "generator/edge_arcs.h"
 #include "generator/edge_pair_batch.h"
 #include "generator/pair_bounds.h"
@@ -136,41 +137,6 @@ bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, 
   if (parallel_edges(edge_a, edge_b, length)) return true;
   const Vec3 unit = axis / length;
   return consider_projected_pair(a, b, a.project(unit), b.project(unit), unit, ea, eb, best, flat);
-}
-
-// Whether an edge pair's axis (unnormalised) lies along a face normal at an
-// end of either arc, to tol::kAxisAlongFaceSine: where the arcs meet at an
-// end, or an end of one lies on the other's circle, the pair spans no face
-// of A - B but that face's own. In the direction where the pair's edges
-// support their hulls, the face's axis has the pair's overlap (to the
-// tilt, short of F3's bias: the pair could not beat it); the other way the
-// overlap is at least the depth, which the faces of A - B attain. SAT has
-// measured or bounded every face before the edge pairs, so such a pair
-// changes nothing, and it is dropped before it is projected or climbed
-// from. A cylinder's rim edges against the other cylinder's rim all meet
-// at the caps' normals: in a grown fuzz corpus of 2,700 inputs, 61% of the
-// pairs SAT projected were these, and its replay took 1.81-1.86 s where it
-// took 2.00-2.04. Large hulls bounded such pairs by balls and climbs only,
-// and a pair along a cap's normal has the cap contact's depth there, which
-// no bound tells from the best: two 257-gon prisms cap to cap measured
-// 66,000 rim pairs in full, each a projection of 514 turned vertices, and
-// a call took 516 ms (F61's hulls; 7 ms since, 17 ms with the pair's last
-// axis). Random 8-point hulls, whose arcs seldom meet at an end, take
-// 2.9% more instructions a call; skipping the test on pairs of 16
-// vertices in all left them at 2.7%, so the cost is in how the compiler
-// now lays out SAT, not in the test, and the test stays for every pair.
-bool axis_along_arc_end(const Vec3& axis, const EdgeArc& x, const EdgeArc& y) {
-  // First the ends against the other's circle: an axis along an end has
-  // that end on both circles, within the sine of the circle's pole (whose
-  // length is at most 1). Four dot products, where the cross products
-  // below cost the 8-point hulls' calls 6% more instructions.
-  constexpr double near = 2 * tol::kAxisAlongFaceSine;
-  const double ends = std::min(std::min(std::abs(y.n_face.dot(x.across)), std::abs(y.n_twin.dot(x.across))),
-                               std::min(std::abs(x.n_face.dot(y.across)), std::abs(x.n_twin.dot(y.across))));
-  if (!(ends <= near)) return false;
-  const double room = tol::kAxisAlongFaceSine * tol::kAxisAlongFaceSine * axis.squaredNorm();
-  return axis.cross(x.n_face).squaredNorm() <= room || axis.cross(x.n_twin).squaredNorm() <= room ||
-         axis.cross(y.n_face).squaredNorm() <= room || axis.cross(y.n_twin).squaredNorm() <= room;
 }
 
 // Every edge pair: the reference the pruning is checked against, and the
@@ -370,10 +336,12 @@ int support_towards(const PosedHull& hull, const Vec3& direction, int from) {
                                                   : hull.support_vertex(direction);
 }
 
-// Rows of fewer pairs are bounded one pair at a time only: a 128-point
-// pair's rows hold one pair on average, and with rows of four in lanes the
-// set-up and B's edge vectors cost its calls 0.7% more instructions (rows
-// of eight, 0.35%).
+// Rows of fewer pairs are bounded, and tested for an axis along an arc's
+// end, one pair at a time only: a 128-point pair's rows hold one pair on
+// average, and with rows of four in lanes the set-up and B's edge vectors
+// cost its calls 0.7% more instructions (rows of eight, 0.35%). The arc-end
+// test in lanes on rows of 16 or more rather than 8 saved those calls
+// 0.03%.
 constexpr int kPairsInLanes = 8;
 
 // A row's pairs as bound_pairs_in_lanes reads them: B's edges, gathered.
@@ -381,6 +349,17 @@ struct PairBoundWork {
   double b0_x[kMaxArcs], b0_y[kMaxArcs], b0_z[kMaxArcs];
   double edge_x[kMaxArcs], edge_y[kMaxArcs], edge_z[kMaxArcs];
   int64_t hopeless[kMaxArcs];
+};
+
+// B's side of a row's pairs gathered for the arc-end test in lanes
+// (generator/arc_end_pairs.h), and the pairs it leaves.
+struct ArcEndWork {
+  double face_x[kMaxArcs], face_y[kMaxArcs], face_z[kMaxArcs];
+  double twin_x[kMaxArcs], twin_y[kMaxArcs], twin_z[kMaxArcs];
+  double across_x[kMaxArcs], across_y[kMaxArcs], across_z[kMaxArcs];
+  double edge_x[kMaxArcs], edge_y[kMaxArcs], edge_z[kMaxArcs];
+  int64_t along[kMaxArcs];
+  int left[kMaxArcs];  ///< the row's arcs of B not along an end, in the row's order
 };
 
 // What SAT's edge phase keeps off the call's stack (the arcs, rows and
@@ -402,7 +381,9 @@ struct SatWorkspace {
   double out_margin[kMaxArcs];   ///< and of B's
   AxisSupport support;  ///< what an edge axis was named by
   PairBoundWork pairs;  ///< a row's pairs, bounded in lanes
+  ArcEndWork arc_ends;  ///< a row's pairs, tested for an axis along an arc's end in lanes
   int measured_in_full = 0;  ///< edge pairs projected in full (edge_pairs_measured_in_full)
+  int formed_alone = 0;      ///< large hulls' pairs whose axis was formed one at a time (edge_pairs_formed_alone)
 };
 
 [[gnu::noinline]] SatWorkspace& sat_workspace() {
@@ -581,7 +562,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     return best;
   }
   SatWorkspace& work = sat_workspace();
-  work.measured_in_full = 0;
+  work.measured_in_full = 0, work.formed_alone = 0;
   // The answer once every edge pair has had its chance: an edge axis named
   // by its supporting edges (two parallelepipeds name theirs by zones).
   const auto named = [&] {
@@ -599,10 +580,6 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   if (row_bounds || !scan_pairs) measure_balls();
   const Vec3 centres = sb.centre - sa.centre;
   int back_a = 0, back_b = 0;  // where the last climbs against an axis ended
-  // The axis of an edge pair, unnormalised: A's edge crossed with B's.
-  const auto pair_axis = [&](int a0, int a1, int b0, int b1) {
-    return world_edge(a, a0, a1).cross(world_edge(b, b0, b1));
-  };
   // Whether A's arc x or B's arc j spans no fold: an edge between
   // coplanar faces gives no axis (F4).
   const auto is_flat_pair = [&](const EdgeArc& x, int j) {
@@ -676,13 +653,12 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // took about 200 instructions; the lanes tell 88% of them, and the
   // benchmark's cylinders take 20% fewer instructions a call.
   PairBoundWork& pairs = work.pairs;
-  bool edge_vectors_b = false;  // written on the first row that needs them
-  const auto bound_row_in_lanes = [&](const EdgeArc& x, const int* js, int count) {
-    if (!edge_vectors_b) work.arcs_b.write_edge_vectors(b), edge_vectors_b = true;
+  bool edge_vectors_b = false;  // written on the first row of large hulls' pairs
+  const auto bound_row_in_lanes = [&](const EdgeArc& x, const Vec3& edge_a, const int* js, int count) {
     const ArcColumns& columns_b = arcs_b.columns();
     const EdgeVectors& edges_b = arcs_b.edge_vectors();
     RowOfPairs row;
-    row.edge_a = world_edge(a, x.v0, x.v1);
+    row.edge_a = edge_a;
     row.vertex_a = a.world_vertex(x.v0);
     row.out_of_a = row.vertex_a - sa.centre;
     row.centres = centres;
@@ -700,6 +676,49 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
                          pairs.hopeless);
     return pairs.hopeless;
   };
+  // Of the `count` pairs of a row of many on large hulls (B's arcs in
+  // ends.left), those whose axis lies along an arc's end left out, all at
+  // once in vector lanes, as the single test would leave them out
+  // (generator/arc_end_pairs.h). Two of one 64-gon prism stacked cap on
+  // cap and turned alike meet so in 16,260 pairs a call (each rim edge
+  // against the other's at the caps' normal, each side edge against every
+  // other, parallel), which no bound tells from the cap contact: tested
+  // one at a time, the benchmark's cylinders stacked alike took 8.7M
+  // instructions a call, 2.9M since. Keeps the pairs left in ends.left,
+  // in the row's order; returns how many.
+  ArcEndWork& ends = work.arc_ends;
+  const auto leave_out_along_arc_ends = [&](const EdgeArc& x, const Vec3& edge_a, int count) {
+    const ArcColumns& columns_b = arcs_b.columns();
+    const EdgeVectors& edges_b = arcs_b.edge_vectors();
+    for (int k = 0; k < count; ++k) {
+      const int j = ends.left[k];
+      ends.face_x[k] = columns_b.face_x[j], ends.face_y[k] = columns_b.face_y[j], ends.face_z[k] = columns_b.face_z[j];
+      ends.twin_x[k] = columns_b.twin_x[j], ends.twin_y[k] = columns_b.twin_y[j], ends.twin_z[k] = columns_b.twin_z[j];
+      ends.across_x[k] = columns_b.across_x[j], ends.across_y[k] = columns_b.across_y[j],
+      ends.across_z[k] = columns_b.across_z[j];
+      ends.edge_x[k] = edges_b.x[j], ends.edge_y[k] = edges_b.y[j], ends.edge_z[k] = edges_b.z[j];
+    }
+    for (int k = count; k < lanes_of(count); ++k)
+      ends.face_x[k] = ends.face_y[k] = ends.face_z[k] = ends.twin_x[k] = ends.twin_y[k] = ends.twin_z[k] =
+          ends.across_x[k] = ends.across_y[k] = ends.across_z[k] = ends.edge_x[k] = ends.edge_y[k] = ends.edge_z[k] =
+              0;
+    axes_along_arc_ends_in_lanes(x, edge_a,
+                                 {ends.face_x, ends.face_y, ends.face_z, ends.twin_x, ends.twin_y, ends.twin_z,
+                                  ends.across_x, ends.across_y, ends.across_z, ends.edge_x, ends.edge_y, ends.edge_z},
+                                 count, ends.along);
+    int left = 0;
+    for (int k = 0; k < count; ++k) ends.left[left] = ends.left[k], left += static_cast<int>(ends.along[k] == 0);
+    return left;
+  };
+  // The `count` pairs of B's arcs `js` that the lanes' bounds leave, kept
+  // in ends.left in the row's order (js may be ends.left); returns how many.
+  const auto leave_out_hopeless = [&](const EdgeArc& x, const Vec3& edge_a, const int* js, int count) {
+    const int64_t* hopeless = bound_row_in_lanes(x, edge_a, js, count);
+    int left = 0;
+    for (int k = 0; k < count; ++k) ends.left[left] = js[k], left += static_cast<int>(hopeless[k] == 0);
+    return left;
+  };
+  bool ends_first = false;  // the arc-end test left out most of the last row's pairs it was given
   // A row: arc i of A against the arcs of B the lanes let through. False
   // when a pair separates the hulls.
   //
@@ -713,27 +732,61 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // of their merged faces, and the triangulated-faces relation was a
   // quarter of a strict fuzz execution on a grown corpus.
   const bool flat_a = arcs_a.may_have_flat(), flat_b = arcs_b.may_have_flat();
+  //
+  // A pair's axis is A's edge, formed once a row, crossed with B's edge,
+  // read from B's edge vectors once a row of many pairs has written them
+  // (once a call): the same differences of the same turned vertices as
+  // world_edge's, so the same axis to the bit. Formed pair by pair, two
+  // 257-gon prisms cap to cap turned four vertices for each of the 66,000
+  // rim pairs that meet at the caps' normal (hulls of more than
+  // kCachedVertices turn a vertex each time it is read), 42% of a call's
+  // instructions. Written on every call of large hulls, the edge vectors
+  // cost 128-point hulls 1.2% more instructions: most of their rows hold
+  // one pair.
+  const EdgeVectors& edges_b = arcs_b.edge_vectors();  // read once written (edge_vectors_b)
   const auto against = [&](int i, const EdgeArc& x, const int* js, int count) {
-    if (flat_a && is_flat_arc(x)) return true;
+    if (count == 0 || (flat_a && is_flat_arc(x))) return true;
+    const Vec3 edge_a = world_edge(a, x.v0, x.v1);
     if (scan_pairs) {
       if (!batch.has_room_for(count) && !settle_batch()) return false;
       for (int k = 0; k < count; ++k) {
         const int j = js[k];
         if (!arcs_b.may_cross(x, j)) continue;
         const ArcIndices& y = arcs_b.indices(j);
-        const Vec3 axis = pair_axis(x.v0, x.v1, y.v0, y.v1);
+        const Vec3 axis = edge_a.cross(world_edge(b, y.v0, y.v1));
         if (!axis_along_arc_end(axis, x, arcs_b[j])) batch.add(i, j, axis);
       }
       return true;
     }
-    const int64_t* hopeless = count >= kPairsInLanes ? bound_row_in_lanes(x, js, count) : nullptr;
+    // A row of many pairs: the lanes' bounds and the arc-end test in lanes,
+    // each on the pairs the other leaves, whichever left out more of the
+    // last row first; the pairs left after both go on one at a time, in the
+    // row's order. Either order leaves the same pairs.
+    bool ends_told = false;
+    if (count >= kPairsInLanes) {
+      if (!edge_vectors_b) work.arcs_b.write_edge_vectors(b), edge_vectors_b = true;
+      const bool ends_before_bounds = ends_first;
+      if (ends_before_bounds) {
+        std::copy(js, js + count, ends.left);
+      } else {
+        count = leave_out_hopeless(x, edge_a, js, count);
+      }
+      if (count >= kPairsInLanes) {
+        const int tested = count;
+        count = leave_out_along_arc_ends(x, edge_a, count), ends_told = true;
+        ends_first = 2 * (tested - count) > tested;
+      }
+      if (ends_before_bounds && count >= kPairsInLanes) count = leave_out_hopeless(x, edge_a, ends.left, count);
+      js = ends.left;
+    }
     for (int k = 0; k < count; ++k) {
-      if (hopeless && hopeless[k]) continue;
       const int j = js[k];
       if (!arcs_b.may_cross(x, j)) continue;
       const ArcIndices& y = arcs_b.indices(j);
-      const Vec3 axis = pair_axis(x.v0, x.v1, y.v0, y.v1);
-      if (axis_along_arc_end(axis, x, arcs_b[j]) || pair_is_hopeless(x, y, axis)) continue;
+      ++work.formed_alone;
+      const Vec3 axis =
+          edge_a.cross(edge_vectors_b ? Vec3(edges_b.x[j], edges_b.y[j], edges_b.z[j]) : world_edge(b, y.v0, y.v1));
+      if ((!ends_told && axis_along_arc_end(axis, x, arcs_b[j])) || pair_is_hopeless(x, y, axis)) continue;
       if (!measure_pair(i, x, j)) return false;
     }
     return true;
@@ -934,6 +987,7 @@ SatResult run_sat(const PosedHull& a, const PosedHull& b) {
   return sat;
 }
 int edge_pairs_measured_in_full() { return sat_workspace().measured_in_full; }
+int edge_pairs_formed_alone() { return sat_workspace().formed_alone; }
 
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_every_pair(a, b); }
 

@@ -67,6 +67,11 @@ SatResult run_sat_with_hint(const PosedHull& a, const PosedHull& b, const AxisHi
 /// nine axes are measured apart, and a call that ends on a face leave the
 /// count of the call before. For tests.
 int edge_pairs_measured_in_full();
+/// How many edge pairs of large hulls (past the small hulls' batch) the
+/// same call formed an axis for one at a time, after the Gauss test and
+/// the row's tests in vector lanes; the same calls leave the count before.
+/// For tests.
+int edge_pairs_formed_alone();
 /// Every axis measured in full and every edge pair tried: what the pruning
 /// and the bounds must agree with.
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b);
