@@ -79,7 +79,8 @@ MFZ_VECTOR_LANES void along_in_lanes(const EdgeArc& x, const Vec3& edge_a, const
     const double room = sine_squared * ((ax * ax + ay * ay) + az * az);
     const double off_a = least_of(cross_squared(ax, ay, az, px, py, pz), cross_squared(ax, ay, az, qx, qy, qz));
     const double off_b = least_of(cross_squared(ax, ay, az, fx, fy, fz), cross_squared(ax, ay, az, tx, ty, tz));
-    along[k] = static_cast<int64_t>((least_of(ends_a, ends_b) <= near) & (least_of(off_a, off_b) <= room));
+    const int64_t ends_on_circles = least_of(ends_a, ends_b) <= near, axis_on_end = least_of(off_a, off_b) <= room;
+    along[k] = ends_on_circles & axis_on_end;
   }
 }
 
