@@ -739,8 +739,9 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // world_edge's, so the same axis to the bit. Formed pair by pair, two
   // 257-gon prisms cap to cap turned four vertices for each of the 66,000
   // rim pairs that meet at the caps' normal (hulls of more than
-  // kCachedVertices turn a vertex each time it is read), 42% of a call's
-  // instructions. Written on every call of large hulls, the edge vectors
+  // kCachedVertices turn a vertex each time it is read): over stacked
+  // prisms of 16 to 257 sides, 42% of SAT's instructions went to turning
+  // those edges. Written on every call of large hulls, the edge vectors
   // cost 128-point hulls 1.2% more instructions: most of their rows hold
   // one pair.
   const EdgeVectors& edges_b = arcs_b.edge_vectors();  // read once written (edge_vectors_b)
