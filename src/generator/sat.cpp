@@ -653,7 +653,7 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // took about 200 instructions; the lanes tell 88% of them, and the
   // benchmark's cylinders take 20% fewer instructions a call.
   PairBoundWork& pairs = work.pairs;
-  bool edge_vectors_b = false;  // written on the first row of large hulls' pairs
+  bool edge_vectors_b = false;  // written by the call's first row of kPairsInLanes pairs or more
   const auto bound_row_in_lanes = [&](const EdgeArc& x, const Vec3& edge_a, const int* js, int count) {
     const ArcColumns& columns_b = arcs_b.columns();
     const EdgeVectors& edges_b = arcs_b.edge_vectors();
@@ -762,7 +762,9 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     // A row of many pairs: the lanes' bounds and the arc-end test in lanes,
     // each on the pairs the other leaves, whichever left out more of the
     // last row first; the pairs left after both go on one at a time, in the
-    // row's order. Either order leaves the same pairs.
+    // row's order. Either order measures the same pairs: a pair the lanes
+    // would bound is bound by pair_is_hopeless too (pair_bounds.h), and
+    // the arc-end test in lanes is the single test's.
     bool ends_told = false;
     if (count >= kPairsInLanes) {
       if (!edge_vectors_b) work.arcs_b.write_edge_vectors(b), edge_vectors_b = true;
