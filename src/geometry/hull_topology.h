@@ -10,9 +10,10 @@
 /// Where it lives: each thread keeps a store of topologies, a ring of
 /// kTopologyStoreBytes reserved on the thread's first generator call (one
 /// allocation per thread, never one per call; pages are touched only as the
-/// ring fills) with an index by a hash of the loops. A generator called
-/// through the ABI reaches it without allocating and without the caller
-/// handing anything over: a plugin's user does nothing, the same loops
+/// ring fills) with an index by a hash of the loops, and slots by where the
+/// loops lie, looked in first (where only to look: the loops are still
+/// compared in full). A generator called through the ABI reaches it without
+/// allocating and without the caller handing anything over: a plugin's user does nothing, the same loops
 /// passed again hit. The ring holds the last few thousand hulls (about 2,000
 /// of 128 points, 60,000 of 8, 490 of 1,024), so a scene that cycles through
 /// many shapes builds each once, as an engine keeps each shape's data; the
@@ -87,5 +88,10 @@ class HullTopology {
 /// not close into a polyhedron. A returned topology stays valid while two
 /// other hulls are looked up on the thread (a generator call holds two).
 const HullTopology* topology_of(const mfz_hull& hull);
+
+/// How many of this thread's lookups hashed the loops: those neither found
+/// where the same loops were last found at their address nor among the
+/// last two hulls. For tests.
+uint64_t topology_lookups_hashed();
 
 }  // namespace mfz
