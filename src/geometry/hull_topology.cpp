@@ -155,10 +155,10 @@ class TopologyStore {
   static constexpr size_t kSets = 8192;
   static constexpr int kWays = 4;
   // Where loops lay when their entry was last found: two ways a set, the
-  // latest first. Twice as many as the benchmark's hulls a family (2,048,
-  // each pair with its own copies), so that a cycle through them finds
-  // each where it lies; with one way, two of sixteen hulls' addresses met
-  // in one slot and were hashed on every lookup.
+  // latest first. Twice as many sets as the benchmark's hulls a family
+  // (2,048, each pair with its own copies), so that a cycle through them
+  // finds each where it lies; with one way, two of sixteen hulls' addresses
+  // met in one slot and were hashed on every lookup.
   struct AddressSlot {
     const int32_t* loops = nullptr;  ///< null: empty
     Entry* entry = nullptr;
