@@ -118,6 +118,34 @@ void expect_columns_of(const EdgeArcs& arcs, const PosedHull& posed) {
   EXPECT_EQ(arcs.size(), edges);
 }
 
+// Each arc's edge vector, v1 - v0 of the world vertices, to the bit.
+void expect_edge_vectors_of(EdgeArcs& arcs, const PosedHull& posed) {
+  arcs.write_edge_vectors(posed);
+  const EdgeVectors& e = arcs.edge_vectors();
+  for (int i = 0; i < arcs.size(); ++i) {
+    const ArcIndices& at = arcs.indices(i);
+    EXPECT_EQ(Vec3(e.x[i], e.y[i], e.z[i]), Vec3(posed.world_vertex(at.v1) - posed.world_vertex(at.v0))) << "arc " << i;
+  }
+}
+
+// Hulls whose world vertices and normals are cached gather their columns in
+// vector lanes (stop 64), larger ones arc by arc: both give the Vec3 path's
+// bits, the lanes' `across` the same products as Vec3::cross.
+TEST(EdgeArcs, ColumnsAndEdgeVectorsAreTheVec3PathsBitsInLanesAndOneByOne) {
+  const Pose pose{Vec3(0.5, -1, 2), test::about(Vec3(1, 2, 3), 0.4)};
+  for (const int points : {8, 32, 128, 200}) {
+    SCOPED_TRACE(points);
+    const Hull hull = *build_hull(test::sphere_points(points, 11u + points)).hull;
+    const mfz_hull view = hull.view();
+    const PosedHull posed(view, pose);
+    ASSERT_EQ(posed.has_world_columns(), hull.vertex_count() <= kCachedVertices);
+    EdgeArcs arcs;
+    arcs.build(posed);
+    expect_columns_of(arcs, posed);
+    expect_edge_vectors_of(arcs, posed);
+  }
+}
+
 TEST(EdgeArcs, ColumnsAreTheArcsOfTheLastBuild) {
   const Hull first = *build_hull(test::sphere_points(32, 3)).hull;
   const Hull second = *build_hull(test::box_points(1, 2, 3)).hull;

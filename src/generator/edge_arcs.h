@@ -122,6 +122,7 @@ class EdgeArcs {
  private:
   bool pair_twins(const PosedHull& hull);
   void write_columns(const PosedHull& hull);
+  void write_columns_one_by_one(const PosedHull& hull, ArcColumns& columns);
 
   struct Storage {
     ArcIndices indices[kMaxArcs];

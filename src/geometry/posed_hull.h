@@ -120,6 +120,12 @@ class PosedHull {
     for (int f = 0; f < hull_.face_count; ++f) normals_[f] = turned_normal(f);
     normals_turned_ = true;
   }
+  /// The turned normals, x y z of each face in turn, once turn_face_normals
+  /// has turned them; nullptr for a hull of more faces than kCachedFaces.
+  const double* turned_face_normals() const {
+    static_assert(sizeof(Vec3) == 3 * sizeof(double), "the normals lie x y z, x y z, ...");
+    return normals_turned_ ? normals_[0].data() : nullptr;
+  }
   /// Whether the world vertices are cached, as columns too (kCachedVertices).
   bool has_world_columns() const { return cached_; }
   /// The cached world vertices' x, y and z, each an array of vertex_count();
