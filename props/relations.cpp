@@ -282,7 +282,7 @@ std::optional<std::string> compare(const Answer& original, const Answer& other, 
   // --seed 2026112601).
   const bool single = original.contacts.size() == 1 || other.contacts.size() == 1;
   if (biased && single &&
-      !(depth_after_moving_b(in.oracles.sat_axes, (original.depth - tol.depth) * original.normal) > 0))
+      !(depth_after_moving_b(in.oracles.sat_axes, (original.depth - tol.depth) * original.normal, 0.0) > 0))
     return std::nullopt;
   const bool strict = in.level == Level::strict;
   if (strict ? in.oracles.axis_tie : ties.direction) return std::nullopt;

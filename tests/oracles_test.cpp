@@ -78,6 +78,27 @@ TEST(ExactDepth, InsideIsTheLeastOverlapAndMovingBByItLeavesThemTouching) {
   EXPECT_LT(depth_after_moving_b(axes, Vec3(2.6, 0, 0)), 0);
 }
 
+// A floor asks only whether the least is above it: the pass ends at the
+// first axis at or below it, which moved past the depth along the answer's
+// normal is the best axis, first (stop 64). Above the floor everywhere,
+// the least is read in full.
+TEST(ExactDepth, AFloorEndsThePassAtTheFirstAxisAtOrBelowIt) {
+  const Scene s = box_on_slab();
+  const auto axes = rank_sat_axes(s);
+  // 0.05 past the depth, and off the slab's side: the best axis leaves
+  // -0.05, the side's about -0.5.
+  const Vec3 past = Vec3(3, 0, 0.15);
+  const double least = depth_after_moving_b(axes, past);
+  const double first = std::min(axes[0].overlap - axes[0].normal.dot(past),
+                                axes[0].reverse_overlap + axes[0].normal.dot(past));
+  ASSERT_LE(first, 0);
+  ASSERT_LT(least, first);
+  EXPECT_EQ(depth_after_moving_b(axes, past, 0.0), first);
+  const Vec3 short_of = Vec3(0, 0, 0.05);
+  EXPECT_EQ(depth_after_moving_b(axes, short_of, 0.0), depth_after_moving_b(axes, short_of));
+  EXPECT_GT(depth_after_moving_b(axes, short_of, 0.0), 0);
+}
+
 // An edge pair's facet of A - B can face either way: moving B against the
 // axis of least overlap must meet the facet on the other side.
 TEST(ExactDepth, MovingBAgainstAnEdgeAxisMeetsTheFacetBehind) {

@@ -340,7 +340,9 @@ InvariantCheck check_separates(const Context& c) {
   const double tol = c.scene.length_tolerance(tol::kSeparates);
   const Vec3 n = c.n.normalized();
   const Vec3 beyond = (c.depth + tol) * n;
-  double err = std::max(0.0, depth_after_moving_b(o.sat_axes, beyond));
+  // Only a positive depth is an error: the pass stops at the first axis
+  // that leaves none.
+  double err = std::max(0.0, depth_after_moving_b(o.sat_axes, beyond, 0.0));
   const char* what = "still overlapping after moving B by depth + tol";
   bool exact_separates = err == 0;
   bool gjk_disagrees = exact_separates && libccd_intersecting(c.scene, beyond);

@@ -176,11 +176,12 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
   return axes;
 }
 
-double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t) {
+double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t, double stop_at) {
   double depth = INFINITY;
   for (const RankedAxis& axis : axes) {
     const double along = axis.normal.dot(t);
     depth = std::min({depth, axis.overlap - along, axis.reverse_overlap + along});
+    if (depth <= stop_at) return depth;
   }
   return depth;
 }
