@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "geometry/closest_point.h"
@@ -13,6 +15,29 @@ namespace {
 TEST(SignedDistance, IsMinusTheDistanceToTheNearestPlaneInside) {
   const Hull cube = *build_hull(test::box_points(1, 1, 1)).hull;
   EXPECT_DOUBLE_EQ(signed_distance(cube, {}, Vec3(0.25, 0, 0)), -0.75);
+}
+
+// Inside, the distance is the highest of the face planes' heights, to the
+// bit: the heights taken in vector lanes (stop 64) are the face's normal
+// dotted with the point less Hull::face_offset, each dot product summed as
+// Vec3's is.
+TEST(SignedDistance, InsideIsTheHighestPlaneHeightToTheBitOfFaceNormalAndOffset) {
+  for (const int points : {8, 32, 100}) {
+    const Hull hull = *build_hull(test::sphere_points(points, 40u + points)).hull;
+    std::mt19937_64 random(points);
+    std::uniform_real_distribution<double> coordinate(-0.6, 0.6);
+    int inside = 0;
+    for (int k = 0; k < 400; ++k) {
+      const Vec3 p(coordinate(random), coordinate(random), coordinate(random));
+      double highest = -INFINITY;
+      for (int f = 0; f < hull.face_count(); ++f)
+        highest = std::max(highest, hull.face_normal(f).dot(p) - hull.face_offset(f));
+      if (!(highest < 0)) continue;
+      ++inside;
+      EXPECT_EQ(signed_distance(hull, {}, p), highest) << points << " points, " << p.transpose();
+    }
+    EXPECT_GT(inside, 50) << points << " points";
+  }
 }
 
 TEST(SignedDistance, IsTheDistanceToTheNearestFaceOutside) {

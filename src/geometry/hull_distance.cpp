@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/closest_point.h"
+#include "geometry/vector_lanes.h"
 
 namespace mfz {
 
@@ -99,6 +100,25 @@ double distance_to_vertex_hull(const Hull& hull, const Vec3& p) {
   return x.norm();
 }
 
+// Each face's height over its plane, n . p - n . v0 (v0 its loop's first
+// vertex), for the first `count` faces at once in vector lanes: the dot
+// products summed (x + y) + z, as Vec3's are, so the bits of the face's
+// normal dotted with p less Hull::face_offset. One face at a time, through
+// the hull's accessors, the heights were a third of the function (on-surface
+// and within-both-hulls spent 13% of a 32-point fuzz execution in it).
+MFZ_VECTOR_LANES void plane_heights(const mfz_hull& h, int count, double px, double py, double pz, double* heights) {
+  const double* normals = &h.face_normals[0].x;
+  const double* vertices = &h.vertices[0].x;
+#pragma omp simd
+  for (int f = 0; f < count; ++f) {
+    const int n = 3 * f, v = 3 * h.face_vertices[h.face_offsets[f]];
+    const double nx = normals[n], ny = normals[n + 1], nz = normals[n + 2];
+    const double along_p = (nx * px + ny * py) + nz * pz;
+    const double offset = (nx * vertices[v] + ny * vertices[v + 1]) + nz * vertices[v + 2];
+    heights[f] = along_p - offset;
+  }
+}
+
 double distance_to_surface(const Hull& hull, const Pose& pose, const Vec3& world_point, double enough) {
   const Vec3 p = pose.to_local_direction(world_point - pose.position);
   // Each face's height over its plane is taken once, for all three passes
@@ -111,11 +131,13 @@ double distance_to_surface(const Hull& hull, const Pose& pose, const Vec3& world
   const auto height = [&](int f) { return f < kHeightsOnStack ? heights[f] : plane_height(f); };
   double outside_most = -std::numeric_limits<double>::infinity();
   int highest_over = 0;
-  for (int f = 0; f < hull.face_count(); ++f) {
-    const double h = plane_height(f);
-    if (f < kHeightsOnStack) heights[f] = h;
-    if (h > outside_most) outside_most = h, highest_over = f;
-  }
+  const mfz_hull view = hull.view();
+  const int in_buffer = std::min(hull.face_count(), kHeightsOnStack);
+  plane_heights(view, in_buffer, p.x(), p.y(), p.z(), heights);
+  for (int f = 0; f < in_buffer; ++f)
+    if (heights[f] > outside_most) outside_most = heights[f], highest_over = f;
+  for (int f = in_buffer; f < hull.face_count(); ++f)
+    if (const double h = plane_height(f); h > outside_most) outside_most = h, highest_over = f;
   if (outside_most <= 0) return outside_most;
   Vec3 loop[kMaxLoopOnStack];
   const auto polygon_distance = [&](int f) {
