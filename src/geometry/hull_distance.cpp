@@ -107,6 +107,7 @@ double distance_to_vertex_hull(const Hull& hull, const Vec3& p) {
 // the hull's accessors, the heights were a third of the function (on-surface
 // and within-both-hulls spent 13% of a 32-point fuzz execution in it).
 MFZ_VECTOR_LANES void plane_heights(const mfz_hull& h, int count, double px, double py, double pz, double* heights) {
+  static_assert(sizeof(mfz_vec3) == 3 * sizeof(double), "the normals and vertices lie x y z, x y z, ...");
   const double* normals = &h.face_normals[0].x;
   const double* vertices = &h.vertices[0].x;
 #pragma omp simd
