@@ -362,9 +362,9 @@ bool add_faces_below_reference(const PosedHull& incident, const int* done, int d
       // The same point again, which the sort puts beside the first (a
       // vertex inside the prism comes once from each face around it): the
       // first was held or added, so this one is held by the same point or
-      // by the first, and the column test need not look. A 128-point
-      // pair's F27 waited with 61 points a call and tested each against
-      // every point kept.
+      // by the first (or, the polygon full, fails as the first did), and
+      // the column test need not look. A 128-point pair's F27 waited with
+      // 61 points a call and tested each against every point kept.
       if (k > 0 && p == below_points[by_depth[k - 1]].second) continue;
       if (holds_point(clipped, p, world_resolution, reference.normal, column)) continue;
       if (clipped.push(p)) kept[by_depth[k]] = true;
