@@ -1,5 +1,6 @@
 #include "bench_families.h"
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -108,7 +109,7 @@ template <class Draw>
 BenchFamily family(const std::string& name, bool boxes, int pairs, unsigned seed, Draw&& draw) {
   Random random(seed);
   BenchFamily f{name, boxes, {}};
-  while (static_cast<int>(f.scenes.size()) < pairs) {
+  while (pairs > 0 && static_cast<int>(f.scenes.size()) < pairs) {
     SceneBuild built = make_scene(draw(random));
     if (built.scene) f.scenes.push_back(std::move(*built.scene));
   }
@@ -117,31 +118,39 @@ BenchFamily family(const std::string& name, bool boxes, int pairs, unsigned seed
 
 }  // namespace
 
-std::vector<BenchFamily> bench_families(int pairs, bool large) {
+std::vector<BenchFamily> bench_families(int pairs, bool large,
+                                        const std::function<bool(const std::string&)>& wanted) {
+  const auto count = [&](const std::string& name) { return !wanted || wanted(name) ? pairs : 0; };
   std::vector<BenchFamily> families;
-  families.push_back(family("boxes face to face", true, pairs, 1, [](Random& r) {
+  families.push_back(family("boxes face to face", true, count("boxes face to face"), 1, [](Random& r) {
     return box_on_box(r, uniform(r, 0, 0.5) * M_PI / 180);
   }));
-  families.push_back(family("boxes tilted", true, pairs, 2, [](Random& r) {
+  families.push_back(family("boxes tilted", true, count("boxes tilted"), 2, [](Random& r) {
     return box_on_box(r, uniform(r, 2, 8) * M_PI / 180);
   }));
   for (int points : {8, 32, 128})
-    families.push_back(family(std::to_string(points) + "-point hulls", false, pairs, 3 + points,
+    families.push_back(family(std::to_string(points) + "-point hulls", false,
+                              count(std::to_string(points) + "-point hulls"), 3 + points,
                               [points](Random& r) { return cloud_pair(r, points, 0.3, 0.9); }));
   // 512 points: past the 128 whose world vertices a call caches on its
   // stack, and where SAT once measured every edge pair (2.1 s a call).
   if (large)
-    families.push_back(family("512-point hulls", false, pairs, 3 + 512,
+    families.push_back(family("512-point hulls", false, count("512-point hulls"), 3 + 512,
                               [](Random& r) { return cloud_pair(r, 512, 0.3, 0.9); }));
-  families.push_back(family("64-gon cylinders", false, pairs, 4, cylinder_on_cylinder));
+  families.push_back(family("64-gon cylinders", false,
+                            std::max(count("64-gon cylinders"), count("64-gon cylinders triangulated")), 4,
+                            cylinder_on_cylinder));
   // The same pairs with every face split into a fan of triangles, as a mesh
   // exported from a modelling tool arrives: the same contacts, from hulls
   // whose caps are 62 triangles each.
   BenchFamily fans{"64-gon cylinders triangulated", false, families.back().scenes};
   for (Scene& s : fans.scenes) s.hull_a = fan_triangulated(s.hull_a), s.hull_b = fan_triangulated(s.hull_b);
+  if (count(fans.name) == 0) fans.scenes.clear();
+  if (count(families.back().name) == 0) families.back().scenes.clear();
   families.push_back(std::move(fans));
-  families.push_back(family("64-gon cylinders stacked alike", false, pairs, 6, cylinder_on_its_twin));
-  families.push_back(family("apart", false, pairs, 5, [](Random& r) { return cloud_pair(r, 32, 1.05, 2); }));
+  families.push_back(family("64-gon cylinders stacked alike", false, count("64-gon cylinders stacked alike"), 6,
+                            cylinder_on_its_twin));
+  families.push_back(family("apart", false, count("apart"), 5, [](Random& r) { return cloud_pair(r, 32, 1.05, 2); }));
   return families;
 }
 

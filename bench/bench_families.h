@@ -1,6 +1,7 @@
 #pragma once
 // The families the generator benchmark times every generator on: 1024 pairs
 // each, from fixed seeds, hulls built (Qhull) and posed before any timing.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,10 @@ struct BenchFamily {
 /// each. The 512-point family is timed (generator_bench) but not
 /// fingerprinted: a generator that measures every edge pair there (the
 /// tutorial, or the built-in before stop 52) takes seconds a call.
-std::vector<BenchFamily> bench_families(int pairs = 1024, bool large = false);
+/// A family whose name `wanted` turns down comes back with no scenes: a
+/// run filtered to the boxes starts at once instead of after seconds of
+/// Qhull (minutes under valgrind).
+std::vector<BenchFamily> bench_families(int pairs = 1024, bool large = false,
+                                        const std::function<bool(const std::string&)>& wanted = {});
 
 }  // namespace mfz::bench
