@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <tuple>
 
 #include "case/case_file.h"
 #include "oracles/brute_force_sat.h"
@@ -242,6 +243,57 @@ TEST(BruteForceSat, EveryEdgeAxisOverlapsAsMuchAsItsPlainProjectionSays) {
     }
   }
   EXPECT_GT(edge_axes, 50000);
+}
+
+// The ranking: every axis within the window of the least overlap comes
+// first (at least three), sorted, and axes of equal overlap in the order
+// they were written (A's faces, B's faces, then the edge pairs row by row).
+// The front is gathered as the axes are written, from those that came
+// within the window of the least so far; boxes put many axes at the least
+// exactly, some written long after the first, and random clouds put it
+// anywhere.
+TEST(BruteForceSat, EveryAxisWithinTheWindowOfTheLeastIsRankedFirstInOrder) {
+  const Quat turn = Quat(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+  std::vector<Scene> scenes = {
+      box_on_slab(), scene_of(test::make_case(box_points(1, 1, 1), {}, box_points(1, 1, 1), {})),
+      scene_of(test::make_case(box_points(1, 1, 1), {Vec3::Zero(), turn}, box_points(0.5, 0.7, 0.9),
+                               {Vec3(0.3, 0.2, 0.1), turn})),
+      scene_of(test::make_case(box_points(1, 2, 3), {}, box_points(1, 2, 3), {Vec3(0, 0, 5.5), Quat::Identity()}))};
+  for (unsigned seed = 1; seed <= 24; ++seed)
+    scenes.push_back(scene_of(test::make_case(test::sphere_points(4 + static_cast<int>(seed * 7 % 29), seed), {},
+                                              test::sphere_points(4 + static_cast<int>(seed * 13 % 29), 100 + seed),
+                                              {Vec3(0.3, 0.2, 0.9), test::about(Vec3(1, 2, 3), 0.1 * seed)})));
+  const auto written = [](const RankedAxis& x) {
+    return std::tuple(static_cast<int>(x.kind == AxisKind::face_a ? 0 : x.kind == AxisKind::face_b ? 1 : 2),
+                      x.feature_a, x.feature_b);
+  };
+  int fronts_of_many = 0;
+  for (const Scene& s : scenes) {
+    const std::vector<RankedAxis> axes = rank_sat_axes(s);
+    ASSERT_GE(axes.size(), 3u);
+    double least = INFINITY;
+    for (const RankedAxis& axis : axes) least = std::min(least, axis.overlap);
+    const double limit = least + s.length_tolerance(kRankedWindow);
+    size_t near = 0;
+    for (const RankedAxis& axis : axes) near += axis.overlap <= limit;
+    fronts_of_many += near > 3;
+    const size_t front = std::max<size_t>(near, 3);
+    for (size_t k = 0; k < axes.size(); ++k) {
+      if (k < near) {
+        ASSERT_LE(axes[k].overlap, limit) << "axis " << k;
+      }
+      if (k >= front) {
+        ASSERT_GE(axes[k].overlap, axes[front - 1].overlap) << "axis " << k;
+      }
+      if (k + 1 < front) {
+        ASSERT_LE(axes[k].overlap, axes[k + 1].overlap) << "axis " << k;
+        if (axes[k].overlap == axes[k + 1].overlap && k + 1 < near) {
+          ASSERT_LT(written(axes[k]), written(axes[k + 1])) << "axis " << k;
+        }
+      }
+    }
+  }
+  EXPECT_GE(fronts_of_many, 3);
 }
 
 // Two needles crossing through each other (a minimised case from check)
