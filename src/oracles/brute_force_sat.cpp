@@ -85,15 +85,17 @@ void project_row(const PointColumns& points, const double* nx, const double* ny,
 }
 
 // A row's edge axes each the smaller way (an edge pair counts either way):
-// its sign, overlap and the overlap the other way, and the overlap again as
-// the ranking's key, infinite where the edges are parallel (no axis).
+// its sign, overlap and the overlap the other way; and the least overlap
+// either way of the row's axes, where the edges are not parallel (no axis).
 // Chosen in lanes rather than pair by pair: which way is smaller is a coin
 // toss from pair to pair, which no branch predicts. Times -1 is negation,
 // to the bit.
 MFZ_VECTOR_LANES void ways_of_row(const double* nx, const double* ny, const double* nz, const double* min_a,
                                   const double* max_a, const double* min_b, const double* max_b, size_t row,
-                                  double* way, double* overlap, double* reverse, double* key) {
-#pragma omp simd
+                                  double* way, double* overlap, double* reverse, double& least,
+                                  double& least_reverse) {
+  double low = INFINITY, low_reverse = INFINITY;
+#pragma omp simd reduction(min : low, low_reverse)
   for (size_t j = 0; j < row; ++j) {
     const double along = max_a[j] - min_b[j], against = max_b[j] - min_a[j];
     const bool along_first = along <= against;
@@ -101,16 +103,11 @@ MFZ_VECTOR_LANES void ways_of_row(const double* nx, const double* ny, const doub
     overlap[j] = along_first ? along : against;
     reverse[j] = along_first ? against : along;
     const bool parallel = nx[j] == 0 && ny[j] == 0 && nz[j] == 0;
-    key[j] = parallel ? INFINITY : overlap[j];
+    const double key = parallel ? INFINITY : overlap[j], reverse_key = parallel ? INFINITY : reverse[j];
+    low = key < low ? key : low;
+    low_reverse = reverse_key < low_reverse ? reverse_key : low_reverse;
   }
-}
-
-// The least of a row's keys, four at a time.
-MFZ_VECTOR_LANES double least_of_row(const double* key, size_t row) {
-  double least = INFINITY;
-#pragma omp simd reduction(min : least)
-  for (size_t j = 0; j < row; ++j) least = key[j] < least ? key[j] : least;
-  return least;
+  least = low, least_reverse = low_reverse;
 }
 
 // A face of A counts outward and a face of B inward only: those are the faces
@@ -189,11 +186,12 @@ class AxisRanking {
 
 }  // namespace
 
-std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
+std::vector<RankedAxis> rank_sat_axes(const Scene& s, double* least_reverse) {
   const PointColumns a(s.world_a), b(s.world_b);
   const auto& edges_a = s.hull_a.edges();
   const auto& edges_b = s.hull_b.edges();
   AxisRanking ranking(s.length_tolerance(kRankedWindow));
+  double least_reverse_found = INFINITY;  // a face axis's other way is no facet: +inf
   // Room for every candidate, each written once: sized with zeroed axes
   // first and written over, the vector was walked twice.
   std::vector<RankedAxis> axes;
@@ -213,12 +211,12 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
   // (x + y) + z, so every overlap is the same to the bit; per axis, the
   // loops over eight vertices left the lanes mostly idle.
   const size_t row = edges_b.size();
-  std::vector<double> columns(15 * row);
+  std::vector<double> columns(14 * row);
   double *vx = columns.data(), *vy = vx + row, *vz = vy + row;  // B's edge vectors
   double *nx = vz + row, *ny = nx + row, *nz = ny + row;        // the row's unit axes
   double *length_b = nz + row, *min_a = length_b + row, *max_a = min_a + row;
   double *min_b = max_a + row, *max_b = min_b + row;
-  double *way = max_b + row, *overlap = way + row, *reverse = overlap + row, *key = reverse + row;
+  double *way = max_b + row, *overlap = way + row, *reverse = overlap + row;
   // A row's axes are written here first, then appended together: pushed
   // one by one, the vector's end went back to memory with every axis (the
   // oracle took 1.07x the time on 32-point hulls).
@@ -233,8 +231,10 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
     axes_of_row(ea, length_a, vx, vy, vz, length_b, row, nx, ny, nz);
     project_row(a, nx, ny, nz, row, min_a, max_a);
     project_row(b, nx, ny, nz, row, min_b, max_b);
-    ways_of_row(nx, ny, nz, min_a, max_a, min_b, max_b, row, way, overlap, reverse, key);
-    ranking.lower(least_of_row(key, row));
+    double row_least = INFINITY, row_least_reverse = INFINITY;
+    ways_of_row(nx, ny, nz, min_a, max_a, min_b, max_b, row, way, overlap, reverse, row_least, row_least_reverse);
+    ranking.lower(row_least);
+    least_reverse_found = std::min(least_reverse_found, row_least_reverse);
     const double near_limit = ranking.near_limit();
     const size_t first = axes.size();
     size_t kept = 0;
@@ -247,7 +247,14 @@ std::vector<RankedAxis> rank_sat_axes(const Scene& s) {
     axes.insert(axes.end(), row_axes.begin(), row_axes.begin() + static_cast<std::ptrdiff_t>(kept));
   }
   ranking.rank(axes);
+  if (least_reverse) *least_reverse = least_reverse_found;
   return axes;
+}
+
+double least_reverse_overlap(const std::vector<RankedAxis>& ranked) {
+  double least = INFINITY;
+  for (const RankedAxis& axis : ranked) least = std::min(least, axis.reverse_overlap);
+  return least;
 }
 
 double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t, double stop_at) {
@@ -260,7 +267,7 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t, 
   return depth;
 }
 
-bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
+bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie, double least_reverse) {
   if (ranked.empty()) return false;
   // docs/contract.md's ties: two candidates within `tie` that can lead to other
   // manifolds: axes pointing other ways (a face axis and a slightly tilted
@@ -274,9 +281,8 @@ bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie) {
   const RankedAxis& best = ranked[0];
   // An edge pair's other way is a facet of A - B too: crossing needles
   // overlap by their thickness both ways, and n and -n tie (the contract's
-  // symmetric case). Those overlaps are not ranked, so every axis is read.
-  for (const RankedAxis& axis : ranked)
-    if (axis.reverse_overlap - best.overlap <= tie) return true;
+  // symmetric case). Those overlaps are not ranked; the least of them tells.
+  if (least_reverse - best.overlap <= tie) return true;
   int face_a = -1, face_b = -1;
   for (size_t k = 0; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
     const RankedAxis& other = ranked[k];

@@ -43,7 +43,18 @@ inline constexpr double kRankedWindow = 1e-6;
 
 /// Every candidate axis with its overlap: least overlap first, sorted as far
 /// as kRankedWindow past it (at least three axes); the rest in no order.
-std::vector<RankedAxis> rank_sat_axes(const Scene& scene);
+/// Where `least_reverse` is given, it receives least_reverse_overlap of the
+/// answer, found as the axes are written.
+std::vector<RankedAxis> rank_sat_axes(const Scene& scene, double* least_reverse = nullptr);
+
+/// The least reverse overlap among `ranked` (+inf where none is less): an
+/// edge axis's other way is a facet of A - B too, and those overlaps are
+/// not ranked. Whether any axis's reverse overlap is within a tie of the
+/// best overlap is whether this one is (subtracting the best rounds the
+/// same way for every axis). Read off the whole list, as it is unordered:
+/// the two scans of it in the tie checks were 6% of a 32-point property
+/// case, whose 8,000 axes no longer sit in the cache by then.
+double least_reverse_overlap(const std::vector<RankedAxis>& ranked);
 
 /// How deep B would still be after moving it by t: min over the candidates of
 /// overlap - n.t, both ways for edge pairs. Positive exactly when B moved by t
@@ -59,7 +70,8 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t,
 /// could lead to another manifold: another kind of axis, another face, or
 /// another direction, the reverse of an edge pair's axis included
 /// (docs/contract.md, "Ties").
-bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie);
+/// `least_reverse` is least_reverse_overlap(ranked).
+bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie, double least_reverse);
 
 /// True when a face axis is among the candidates within `tie` of the least
 /// overlap along the best direction.

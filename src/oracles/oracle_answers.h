@@ -4,6 +4,7 @@
 /// ranked axes, the exact depth, libccd's GJK and EPA, and what follows from
 /// them (touching, tied axes). The invariants compare a manifold with these
 /// answers; none of them uses the generator under test.
+#include <cmath>
 #include <vector>
 
 #include "case/scene.h"
@@ -18,6 +19,7 @@ namespace mfz {
 struct OracleAnswers {
   ExactDepth exact;
   std::vector<RankedAxis> sat_axes;  ///< brute-force SAT, best first
+  double least_reverse_overlap = INFINITY;  ///< of sat_axes (brute_force_sat.h)
   LibccdAnswer ccd;
   bool touching = false;  ///< |exact depth or gap| within tol::kTouching
   bool axis_tie = false;  ///< two distinct minimal axes (tolerances.h kTie)

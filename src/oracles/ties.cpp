@@ -55,16 +55,15 @@ bool several_supporting_edges(const Hull& hull, const std::vector<Vec3>& world, 
 
 }  // namespace
 
-Ties classify_ties(const Scene& s, const std::vector<RankedAxis>& ranked, double tie) {
+Ties classify_ties(const Scene& s, const std::vector<RankedAxis>& ranked, double tie, double least_reverse) {
   Ties ties;
   if (ranked.empty()) return ties;
   const RankedAxis& best = ranked[0];
   const double window = s.length_tolerance(tol::kSupportWindow);
   // An edge pair's other way is a facet of A - B too (crossing needles
   // overlap by their thickness both ways); those overlaps are not ranked,
-  // so every axis is read (h4).
-  for (const RankedAxis& axis : ranked)
-    if (axis.reverse_overlap - best.overlap <= tie) ties.direction = true;
+  // and the least of them tells (h4).
+  if (least_reverse - best.overlap <= tie) ties.direction = true;
   for (size_t k = 1; k < ranked.size() && ranked[k].overlap - best.overlap <= tie; ++k) {
     const RankedAxis& other = ranked[k];
     if (!coplanar_normals(other.normal, best.normal)) {
@@ -106,7 +105,7 @@ Ties classify_ties_along(const Scene& s, const std::vector<RankedAxis>& ranked, 
     if (&axis != along && std::abs(axis.overlap - along->overlap) <= tie) near.push_back(axis);
   std::sort(near.begin() + 1, near.end(),
             [](const RankedAxis& x, const RankedAxis& y) { return x.overlap < y.overlap; });
-  return classify_ties(s, near, tie);
+  return classify_ties(s, near, tie, least_reverse_overlap(near));
 }
 
 }  // namespace mfz

@@ -41,10 +41,11 @@ struct Ties {
   bool contacts_open() const { return feature || incident_face || supporting_edge || perpendicular_face; }
 };
 
-/// Classifies the ties of `scene` given its ranked axes (best first).
-/// `tie` is the overlap tolerance (a length); the support window is
-/// tol::kSupportWindow L plus the world frame's rounding.
-Ties classify_ties(const Scene& scene, const std::vector<RankedAxis>& ranked, double tie);
+/// Classifies the ties of `scene` given its ranked axes (best first) and
+/// their least_reverse_overlap (brute_force_sat.h). `tie` is the overlap
+/// tolerance (a length); the support window is tol::kSupportWindow L plus
+/// the world frame's rounding.
+Ties classify_ties(const Scene& scene, const std::vector<RankedAxis>& ranked, double tie, double least_reverse);
 
 /// The ties along `normal`, a face axis a face-bias profile let the
 /// generator take though it is not the least: the candidates along it and
