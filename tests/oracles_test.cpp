@@ -100,6 +100,39 @@ TEST(ExactDepth, AFloorEndsThePassAtTheFirstAxisAtOrBelowIt) {
   EXPECT_GT(depth_after_moving_b(axes, short_of, 0.0), 0);
 }
 
+// Moved by less than the least overlap, whichever way, B still overlaps A,
+// and the least overlap alone says so: every axis then leaves a positive
+// depth. Moved that far along the best axis, it leaves none, and the bound
+// says nothing.
+TEST(ExactDepth, ShortOfTheLeastOverlapBSurelyStillOverlaps) {
+  std::vector<Scene> scenes = {box_on_slab()};
+  const CaseParse needles = read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
+  ASSERT_TRUE(needles.value) << needles.error;
+  scenes.push_back(scene_of(*needles.value));
+  for (unsigned seed = 1; seed <= 12; ++seed)
+    scenes.push_back(scene_of(test::make_case(test::sphere_points(4 + static_cast<int>(seed * 7 % 29), seed), {},
+                                              test::sphere_points(4 + static_cast<int>(seed * 13 % 29), 100 + seed),
+                                              {Vec3(0.3, 0.2, 0.5), test::about(Vec3(1, 2, 3), 0.1 * seed)})));
+  int surely = 0, colliding = 0;
+  for (const Scene& s : scenes) {
+    const auto axes = rank_sat_axes(s);
+    if (!(axes[0].overlap > 0)) continue;
+    ++colliding;
+    std::vector<Vec3> ways = {axes[0].normal, -axes[0].normal};
+    for (unsigned k = 0; k < 16; ++k) ways.push_back(test::sphere_points(1, 1000 + k)[0].normalized());
+    for (const Vec3& way : ways)
+      for (const double share : {0.5, 0.999999, 1.0, 1.000001, 1.5}) {
+        const Vec3 t = share * axes[0].overlap * way;
+        if (!surely_overlapping_after_moving_b(axes, t)) continue;
+        ++surely;
+        EXPECT_LT(share, 1);
+        EXPECT_GT(depth_after_moving_b(axes, t), 0) << "share " << share;
+      }
+  }
+  EXPECT_GE(colliding, 8);
+  EXPECT_EQ(surely, colliding * 18 * 2);  // every way at half the least overlap and just short of it
+}
+
 // An edge pair's facet of A - B can face either way: moving B against the
 // axis of least overlap must meet the facet on the other side.
 TEST(ExactDepth, MovingBAgainstAnEdgeAxisMeetsTheFacetBehind) {

@@ -351,7 +351,10 @@ InvariantCheck check_separates(const Context& c) {
   const double bias = c.face_bias_allowance();
   if (exact_separates && c.depth - bias > 2 * tol) {
     const Vec3 short_of = (c.depth - bias - tol) * n;
-    err = std::max(0.0, -depth_after_moving_b(o.sat_axes, short_of));
+    // Short of the least overlap, B certainly still overlaps: no axis read.
+    err = surely_overlapping_after_moving_b(o.sat_axes, short_of)
+              ? 0.0
+              : std::max(0.0, -depth_after_moving_b(o.sat_axes, short_of));
     what = "already separate after moving B by depth - tol";
     gjk_disagrees = err == 0 && !libccd_intersecting(c.scene, short_of);
   }

@@ -267,6 +267,12 @@ double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t, 
   return depth;
 }
 
+bool surely_overlapping_after_moving_b(const std::vector<RankedAxis>& ranked, const Vec3& t) {
+  // |n . t| rounds to at most |t| (1 + 8 ulps) for |n| within ulps of 1;
+  // an overlap above it, less it, stays above zero once rounded.
+  return !ranked.empty() && ranked[0].overlap > t.norm() * (1 + 1e-12);
+}
+
 bool has_axis_tie(const std::vector<RankedAxis>& ranked, double tie, double least_reverse) {
   if (ranked.empty()) return false;
   // docs/contract.md's ties: two candidates within `tie` that can lead to other

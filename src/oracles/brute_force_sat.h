@@ -66,6 +66,16 @@ double least_reverse_overlap(const std::vector<RankedAxis>& ranked);
 double depth_after_moving_b(const std::vector<RankedAxis>& axes, const Vec3& t,
                             double stop_at = -std::numeric_limits<double>::infinity());
 
+/// True when depth_after_moving_b(ranked, t) is certainly positive, told by
+/// the least overlap alone: each candidate's value is an overlap less n.t,
+/// or a reverse overlap (never less than the overlap) plus n.t, for a unit
+/// n, so while |t| and room for the dot product's rounding stay below the
+/// least overlap (ranked[0]'s), every value is positive. False says
+/// nothing. Moving B short of the depth is the usual question, and the pass
+/// over 8,000 axes that no longer sit in the cache was 4% of a 32-point
+/// property case.
+bool surely_overlapping_after_moving_b(const std::vector<RankedAxis>& ranked, const Vec3& t);
+
 /// True when another candidate has an overlap within `tie` of the minimum and
 /// could lead to another manifold: another kind of axis, another face, or
 /// another direction, the reverse of an edge pair's axis included

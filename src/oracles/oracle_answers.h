@@ -19,7 +19,9 @@ namespace mfz {
 struct OracleAnswers {
   ExactDepth exact;
   std::vector<RankedAxis> sat_axes;  ///< brute-force SAT, best first
-  double least_reverse_overlap = INFINITY;  ///< of sat_axes (brute_force_sat.h)
+  /// least_reverse_overlap(sat_axes) (brute_force_sat.h); NaN until
+  /// consult_oracles finds it, which no check takes for a bound.
+  double least_reverse_overlap = NAN;
   LibccdAnswer ccd;
   bool touching = false;  ///< |exact depth or gap| within tol::kTouching
   bool axis_tie = false;  ///< two distinct minimal axes (tolerances.h kTie)
