@@ -224,6 +224,26 @@ TEST(HullMeasures, AScaledHullHasTheMeasuresItWouldTakeAgain) {
     }
 }
 
+// Each face's plane offset is taken once, as the hull is made: its normal
+// dotted with its loop's first vertex. A renumbered hull's loops start one
+// vertex later and a scaled hull's vertices move, so each takes its own,
+// and they are those of the same hull made again, to the bit.
+TEST(HullMeasures, FaceOffsetsAreThePlanesThroughEachLoopsFirstVertex) {
+  for (unsigned seed = 1; seed <= 20; ++seed) {
+    const Hull h = *build_hull(test::sphere_points(6 + static_cast<int>(seed), seed)).hull;
+    for (const Hull& made : {h, h.renumbered(), h.scaled(2), h.scaled(0.1), fan_triangulated(h)}) {
+      const Hull again = measured_again(made);
+      ASSERT_EQ(made.face_count(), again.face_count());
+      for (int f = 0; f < made.face_count(); ++f) {
+        EXPECT_EQ(made.face_offset(f), made.face_normal(f).dot(made.vertex(made.face_vertex(f, 0))))
+            << "seed " << seed << ", face " << f;
+        EXPECT_EQ(made.face_offset(f), again.face_offset(f)) << "seed " << seed << ", face " << f;
+        EXPECT_EQ(made.face_offsets()[f], made.face_offset(f));
+      }
+    }
+  }
+}
+
 TEST(HullMeasures, TheSharpestCornerIsTheSineOfTheSmallestFaceAngle) {
   // A wedge whose slanted faces meet the base at corners of 0.1 rad.
   const double t = std::tan(0.1);

@@ -184,6 +184,16 @@ void Hull::measure_corners_and_edges() {
     }
 }
 
+// Every distance to a face plane subtracts its offset: taken from the
+// loop's first vertex on each query, the offsets were two fifths of the
+// heights' pass, which the on-surface and within-both-hulls checks make
+// for every contact of every run.
+void Hull::take_plane_offsets() {
+  Shape& shape = *shape_;
+  shape.plane_offsets.resize(shape.face_normals.size());
+  for (int f = 0; f < face_count(); ++f) shape.plane_offsets[f] = face_normal(f).dot(vertex(face_vertex(f, 0)));
+}
+
 mfz_hull Hull::view() const {
   const Shape& shape = *shape_;
   return {vertex_count(), shape.vertices.data(), face_count(), shape.face_offsets.data(), shape.face_vertices.data(),
@@ -220,6 +230,7 @@ Hull Hull::scaled(double s) const {
     out.measure_corners_and_edges();
   }
   out.shape_->diameter = s * diameter();
+  out.take_plane_offsets();
   return out;
 }
 
@@ -248,6 +259,7 @@ Hull Hull::renumbered() const {
   shape.diameter = diameter();
   shape.shortest_edge = shortest_edge();
   shape.sharpest_corner = sharpest_corner();
+  out.take_plane_offsets();  // each loop starts one vertex later
   return out;
 }
 
@@ -287,6 +299,7 @@ Hull Hull::from_faces(std::vector<Vec3> vertices, std::vector<std::vector<int>> 
       shape.unpaired_edge = {steps.from[k], steps.to[k]};
   }
   hull.measure_shape();
+  hull.take_plane_offsets();
   return hull;
 }
 

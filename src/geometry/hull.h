@@ -36,8 +36,12 @@ class Hull {
   int edge_count() const { return static_cast<int>(shape_->edges.size()); }
   Vec3 vertex(int i) const { return to_vec(shape_->vertices[i]); }
   Vec3 face_normal(int f) const { return to_vec(shape_->face_normals[f]); }
-  /// The face plane's offset: normal . x = offset for x on face f.
-  double face_offset(int f) const { return face_normal(f).dot(vertex(face_vertex(f, 0))); }
+  /// The face plane's offset: normal . x = offset for x on face f, the
+  /// normal dotted with the loop's first vertex, taken once as the hull is
+  /// made.
+  double face_offset(int f) const { return shape_->plane_offsets[f]; }
+  /// Every face's offset, in face order.
+  const double* face_offsets() const { return shape_->plane_offsets.data(); }
   int face_size(int f) const { return shape_->face_offsets[f + 1] - shape_->face_offsets[f]; }
   int face_vertex(int f, int k) const { return shape_->face_vertices[shape_->face_offsets[f] + k]; }
   const std::vector<HullEdge>& edges() const { return shape_->edges; }
@@ -76,6 +80,7 @@ class Hull {
     std::vector<int32_t> face_offsets;
     std::vector<int32_t> face_vertices;
     std::vector<mfz_vec3> face_normals;
+    std::vector<double> plane_offsets;  // face_offset's
     std::vector<HullEdge> edges;
     double diameter = 0;
     double shortest_edge = 0;
@@ -87,6 +92,8 @@ class Hull {
   void measure_shape();
   /// The same but the diameter.
   void measure_corners_and_edges();
+  /// Takes each face's plane offset from its normal and first vertex.
+  void take_plane_offsets();
 };
 
 /// The outcome of building a hull: a hull, or a one-line reason.

@@ -100,23 +100,21 @@ double distance_to_vertex_hull(const Hull& hull, const Vec3& p) {
   return x.norm();
 }
 
-// Each face's height over its plane, n . p - n . v0 (v0 its loop's first
-// vertex), for the first `count` faces at once in vector lanes: the dot
-// products summed (x + y) + z, as Vec3's are, so the bits of the face's
-// normal dotted with p less Hull::face_offset. One face at a time, through
-// the hull's accessors, the heights were a third of the function (on-surface
-// and within-both-hulls spent 13% of a 32-point fuzz execution in it).
-MFZ_VECTOR_LANES void plane_heights(const mfz_hull& h, int count, double px, double py, double pz, double* heights) {
-  static_assert(sizeof(mfz_vec3) == 3 * sizeof(double), "the normals and vertices lie x y z, x y z, ...");
-  const double* normals = &h.face_normals[0].x;
-  const double* vertices = &h.vertices[0].x;
+// Each face's height over its plane, n . p less the plane's offset, for
+// the first `count` faces at once in vector lanes: the dot products summed
+// (x + y) + z, as Vec3's are, so the bits of the face's normal dotted with
+// p less Hull::face_offset. One face at a time, through the hull's
+// accessors, the heights were a third of the function (on-surface and
+// within-both-hulls spent 13% of a 32-point fuzz execution in it).
+MFZ_VECTOR_LANES void plane_heights(const mfz_vec3* face_normals, const double* offsets, int count, double px,
+                                    double py, double pz, double* heights) {
+  static_assert(sizeof(mfz_vec3) == 3 * sizeof(double), "the normals lie x y z, x y z, ...");
+  const double* normals = &face_normals[0].x;
 #pragma omp simd
   for (int f = 0; f < count; ++f) {
-    const int n = 3 * f, v = 3 * h.face_vertices[h.face_offsets[f]];
+    const int n = 3 * f;
     const double nx = normals[n], ny = normals[n + 1], nz = normals[n + 2];
-    const double along_p = (nx * px + ny * py) + nz * pz;
-    const double offset = (nx * vertices[v] + ny * vertices[v + 1]) + nz * vertices[v + 2];
-    heights[f] = along_p - offset;
+    heights[f] = ((nx * px + ny * py) + nz * pz) - offsets[f];
   }
 }
 
@@ -134,7 +132,7 @@ double distance_to_surface(const Hull& hull, const Pose& pose, const Vec3& world
   int highest_over = 0;
   const mfz_hull view = hull.view();
   const int in_buffer = std::min(hull.face_count(), kHeightsOnStack);
-  plane_heights(view, in_buffer, p.x(), p.y(), p.z(), heights);
+  plane_heights(view.face_normals, hull.face_offsets(), in_buffer, p.x(), p.y(), p.z(), heights);
   for (int f = 0; f < in_buffer; ++f)
     if (heights[f] > outside_most) outside_most = heights[f], highest_over = f;
   for (int f = in_buffer; f < hull.face_count(); ++f)
