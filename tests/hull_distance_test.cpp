@@ -190,5 +190,18 @@ TEST(SignedDistance, PastAnAllowanceIsExactAndWithinItAtMostTheAllowance) {
   EXPECT_GT(within, 1000);
 }
 
+// Within its allowance signed_distance_past answers from the face the
+// point stands highest over (the first such face where heights tie): off
+// each face of a cube, that face's own distance, where any other face
+// would answer further.
+TEST(SignedDistance, WithinAnAllowanceTheFaceStoodHighestOverAnswersFirst) {
+  const Hull cube = *build_hull(test::box_points(1, 1, 1)).hull;
+  for (int f = 0; f < cube.face_count(); ++f) {
+    const Vec3 n = cube.face_normal(f);
+    const Vec3 p = 1.5 * n + 0.25 * n.unitOrthogonal();
+    EXPECT_EQ(signed_distance_past(cube, {}, p, 10), 0.5) << "face " << f;
+  }
+}
+
 }  // namespace
 }  // namespace mfz
