@@ -95,7 +95,8 @@ void BM_CaseStage(benchmark::State& state, const std::string& stage) {
     } else if (stage == "libccd") {
       benchmark::DoNotOptimize(ask_libccd(s));
     } else if (stage == "ties") {
-      benchmark::DoNotOptimize(classify_ties(s, r.oracles.sat_axes, s.length_tolerance(tol::kTie), r.oracles.least_reverse_overlap));
+      benchmark::DoNotOptimize(
+          classify_ties(s, r.oracles.sat_axes, s.length_tolerance(tol::kTie), r.oracles.least_reverse_overlap));
     } else if (stage == "invariants") {
       benchmark::DoNotOptimize(check_manifold(s, r.oracles, 0, r.manifold, {}, PassDetails::left_out));
     } else {

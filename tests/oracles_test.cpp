@@ -106,7 +106,8 @@ TEST(ExactDepth, AFloorEndsThePassAtTheFirstAxisAtOrBelowIt) {
 // says nothing.
 TEST(ExactDepth, ShortOfTheLeastOverlapBSurelyStillOverlaps) {
   std::vector<Scene> scenes = {box_on_slab()};
-  const CaseParse needles = read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
+  const CaseParse needles =
+      read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
   ASSERT_TRUE(needles.value) << needles.error;
   scenes.push_back(scene_of(*needles.value));
   for (unsigned seed = 1; seed <= 12; ++seed)
@@ -294,7 +295,8 @@ TEST(BruteForceSat, EveryAxisWithinTheWindowOfTheLeastIsRankedFirstInOrder) {
       scene_of(test::make_case(box_points(1, 1, 1), {Vec3::Zero(), turn}, box_points(0.5, 0.7, 0.9),
                                {Vec3(0.3, 0.2, 0.1), turn})),
       scene_of(test::make_case(box_points(1, 2, 3), {}, box_points(1, 2, 3), {Vec3(0, 0, 5.5), Quat::Identity()}))};
-  const CaseParse needles = read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
+  const CaseParse needles =
+      read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
   ASSERT_TRUE(needles.value) << needles.error;
   scenes.push_back(scene_of(*needles.value));
   for (unsigned seed = 1; seed <= 24; ++seed)
