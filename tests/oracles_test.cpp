@@ -35,6 +35,29 @@ Scene scene_of(const CaseFile& c) {
   return std::move(*built.scene);
 }
 
+// Two needles crossing through each other, a minimised case from check:
+// an edge axis ties with its own reverse (h4).
+Scene crossing_needles() {
+  const CaseParse parsed =
+      read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
+  if (!parsed.value) {
+    ADD_FAILURE() << parsed.error;
+    std::abort();
+  }
+  return scene_of(*parsed.value);
+}
+
+// `count` pairs of clouds of 4 to 32 points on unit spheres, B at `b_at`
+// and turned a little more with each seed.
+std::vector<Scene> sphere_cloud_pairs(unsigned count, const Vec3& b_at) {
+  std::vector<Scene> scenes;
+  for (unsigned seed = 1; seed <= count; ++seed)
+    scenes.push_back(scene_of(test::make_case(test::sphere_points(4 + static_cast<int>(seed * 7 % 29), seed), {},
+                                              test::sphere_points(4 + static_cast<int>(seed * 13 % 29), 100 + seed),
+                                              {b_at, test::about(Vec3(1, 2, 3), 0.1 * seed)})));
+  return scenes;
+}
+
 Scene box_on_slab(const Vec3& offset = Vec3::Zero()) {
   return scene_of(test::make_case(box_points(2, 2, 0.5), {offset, Quat::Identity()}, box_points(0.5, 0.5, 0.5),
                                   {offset + Vec3(0, 0, 0.9), Quat::Identity()}));
@@ -105,15 +128,9 @@ TEST(ExactDepth, AFloorEndsThePassAtTheFirstAxisAtOrBelowIt) {
 // depth. Moved that far along the best axis, it leaves none, and the bound
 // says nothing.
 TEST(ExactDepth, ShortOfTheLeastOverlapBSurelyStillOverlaps) {
-  std::vector<Scene> scenes = {box_on_slab()};
-  const CaseParse needles =
-      read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
-  ASSERT_TRUE(needles.value) << needles.error;
-  scenes.push_back(scene_of(*needles.value));
-  for (unsigned seed = 1; seed <= 12; ++seed)
-    scenes.push_back(scene_of(test::make_case(test::sphere_points(4 + static_cast<int>(seed * 7 % 29), seed), {},
-                                              test::sphere_points(4 + static_cast<int>(seed * 13 % 29), 100 + seed),
-                                              {Vec3(0.3, 0.2, 0.5), test::about(Vec3(1, 2, 3), 0.1 * seed)})));
+  std::vector<Scene> scenes = sphere_cloud_pairs(12, Vec3(0.3, 0.2, 0.5));
+  scenes.push_back(box_on_slab());
+  scenes.push_back(crossing_needles());
   int surely = 0, colliding = 0;
   for (const Scene& s : scenes) {
     const auto axes = rank_sat_axes(s);
@@ -295,14 +312,8 @@ TEST(BruteForceSat, EveryAxisWithinTheWindowOfTheLeastIsRankedFirstInOrder) {
       scene_of(test::make_case(box_points(1, 1, 1), {Vec3::Zero(), turn}, box_points(0.5, 0.7, 0.9),
                                {Vec3(0.3, 0.2, 0.1), turn})),
       scene_of(test::make_case(box_points(1, 2, 3), {}, box_points(1, 2, 3), {Vec3(0, 0, 5.5), Quat::Identity()}))};
-  const CaseParse needles =
-      read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
-  ASSERT_TRUE(needles.value) << needles.error;
-  scenes.push_back(scene_of(*needles.value));
-  for (unsigned seed = 1; seed <= 24; ++seed)
-    scenes.push_back(scene_of(test::make_case(test::sphere_points(4 + static_cast<int>(seed * 7 % 29), seed), {},
-                                              test::sphere_points(4 + static_cast<int>(seed * 13 % 29), 100 + seed),
-                                              {Vec3(0.3, 0.2, 0.9), test::about(Vec3(1, 2, 3), 0.1 * seed)})));
+  scenes.push_back(crossing_needles());
+  for (Scene& clouds : sphere_cloud_pairs(24, Vec3(0.3, 0.2, 0.9))) scenes.push_back(std::move(clouds));
   const auto written = [](const RankedAxis& x) {
     return std::tuple(static_cast<int>(x.kind == AxisKind::face_a ? 0 : x.kind == AxisKind::face_b ? 1 : 2),
                       x.feature_a, x.feature_b);
@@ -342,9 +353,7 @@ TEST(BruteForceSat, EveryAxisWithinTheWindowOfTheLeastIsRankedFirstInOrder) {
 // overlap by about their thickness along the edge axis either way: n and -n
 // are both minimal, and only the reverse overlap shows it.
 TEST(BruteForceSat, CrossingNeedlesTieBetweenAnEdgeAxisAndItsReverse) {
-  const CaseParse parsed = read_case_file(test::corpus_path("regressions/h4-crossing-needles-tie-with-the-reverse-axis.case"));
-  ASSERT_TRUE(parsed.value) << parsed.error;
-  const Scene s = scene_of(*parsed.value);
+  const Scene s = crossing_needles();
   const auto axes = rank_sat_axes(s);
   ASSERT_EQ(axes[0].kind, AxisKind::edge_edge);
   EXPECT_LE(axes[0].reverse_overlap - axes[0].overlap, s.length_tolerance(1e-9));
