@@ -23,8 +23,10 @@ struct LaneArc {
 // when it passes, "and" is the least of two, "or" the greatest and "not" a
 // negation (which takes a zero as failing: a row kept, never one dropped),
 // so that every lane computes every term and the loop runs in vector
-// lanes: g++ would not vectorise the tests as booleans.
-inline double lane_margin(const LaneArc& k, double vx, double vy, double vz, double floor) {
+// lanes: g++ would not vectorise the tests as booleans. Inlined by force:
+// clang called it twice a step from the fuzz build's loop, which then ran
+// a lane at a time (tests/fuzz_lane_loops_test.sh).
+[[gnu::always_inline]] inline double lane_margin(const LaneArc& k, double vx, double vy, double vz, double floor) {
   floor += 2 * kArcBoundMargin * ((vx < 0 ? -vx : vx) + (vy < 0 ? -vy : vy) + (vz < 0 ? -vz : vz));
   const double pv = (k.px * vx + k.py * vy) + k.pz * vz;
   const double qv = (k.qx * vx + k.qy * vy) + k.qz * vz;
