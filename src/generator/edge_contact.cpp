@@ -2,6 +2,7 @@
 // perpendicular to n, so clipping one against the other puts point_on_b off
 // B's surface. The contact is instead the closest pair of points of the two
 // edges that support the hulls along n and -n.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -50,10 +51,17 @@ bool closest_points_of_edges(const PosedHull& a, const PosedHull& b, const SatRe
       Vec3 point_a, point_b;
       closest_between_segments(edge_a.from, edge_a.to, edge_b.from, edge_b.to, point_a, point_b);
       const double miss = (point_b - (point_a - sat.depth * sat.normal)).norm();
-      // The tolerance adds the rounding of world coordinates far from the origin.
-      const double reach = (edge_a.to - edge_a.from).norm() + (edge_b.to - edge_b.from).norm();
+      // The miss is how far the contact's point on B, put at point_a + p n
+      // below, stands off B's edge: on-surface holds it to 1e-9 L, so it is
+      // bounded by the longer edge, which no hull's diameter falls short of,
+      // not by the two edges' lengths added up. Added up, two edges of two
+      // tetrahedra 1e4 long took a pair that missed by 2e-5 (1.8e-9 L), and
+      // its point on B stood that far off B (rigid-motion, manifold_fuzzer,
+      // F62). The tolerance adds the rounding of world coordinates far from
+      // the origin.
+      const double longer = std::max((edge_a.to - edge_a.from).norm(), (edge_b.to - edge_b.from).norm());
       const double extent = edge_a.from.cwiseAbs().maxCoeff() + edge_b.from.cwiseAbs().maxCoeff();
-      const double slack = tol::kEdgesCross * reach + tol::world_rounding(extent);
+      const double slack = tol::kEdgesCross * longer + tol::world_rounding(extent);
       // Only edges whose shadows along n cross make an edge contact; otherwise
       // the axis came from a near-tie with a face axis: clip faces instead.
       if (!(miss <= slack)) return;

@@ -229,7 +229,9 @@ inline constexpr double kGaussArcSlack = 1e-9;
 /// times the 1e-12 a hull's stored normals may sit off its vertices' planes.
 inline constexpr double kAxisAlongFaceSine = 1e-11;
 /// Generator: the supporting edges of an edge-edge axis make a contact only if
-/// their closest points lie along n to within this fraction of their lengths.
-inline constexpr double kEdgesCross = 1e-9;
+/// their closest points lie along n to within this fraction of the longer
+/// edge's length: half of on-surface's 1e-9 L, since the point on B stands
+/// off B's edge by that miss (F62).
+inline constexpr double kEdgesCross = 5e-10;
 
 }  // namespace mfz::tol
