@@ -136,6 +136,24 @@ TEST(HullBuilding, CollinearAndCoincidentPointsAreErrors) {
   EXPECT_FALSE(build_hull({{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}}).hull);
 }
 
+// A cloud 1e-129 across, which Qhull closes with facets whose corners are
+// all dropped as not extreme, one face left with none: an error, named,
+// and nothing read past the loops. Taking each face's plane offset from its
+// first corner, stop 67's hull read a corner the empty face does not have
+// (a heap overflow under ASan; a SEGV in the fuzzer, manifold_fuzzer from
+// an empty corpus at -max_len=500).
+TEST(HullBuilding, ACloudWhoseFacesLoseEveryCornerIsAnErrorNotARead) {
+  const HullBuild built = build_hull({{-3.0648456941657976e-289, 1.8018255209656384e-129, 1.801936811432483e-129},
+                                      {-3.064529257580044e-289, 1.8018255209656384e-129, 1.8018255910480497e-129},
+                                      {-3.0648456941657985e-289, 1.8018255209656384e-129, 1.8018255910480497e-129},
+                                      {1.8019367571256548e-129, 1.8019367571256548e-129, 1.8019367571256548e-129},
+                                      {1.8018255367412212e-129, 1.8019367571256548e-129, 1.8018255367412212e-129},
+                                      {1.8018255367412212e-129, 1.8018255367412212e-129, 1.8019367571256548e-129},
+                                      {1.2671712263056725e-143, 1.8018255209656345e-129, 1.8018255910480375e-129}});
+  EXPECT_FALSE(built.hull);
+  EXPECT_EQ(built.error, "invalid hull: fewer than four vertices or faces");
+}
+
 // Each edge's left face holds the step v0 -> v1, its right face v1 -> v0.
 void expect_edges_match_loops(const Hull& h) {
   const auto holds_step = [&](int f, int from, int to) {

@@ -187,11 +187,15 @@ void Hull::measure_corners_and_edges() {
 // Every distance to a face plane subtracts its offset: taken from the
 // loop's first vertex on each query, the offsets were two fifths of the
 // heights' pass, which the on-surface and within-both-hulls checks make
-// for every contact of every run.
+// for every contact of every run. A face left with no corners (a cloud
+// 1e-129 across, whose corners were all dropped as not extreme) has no
+// plane: its offset is 0, and validate_hull refuses the hull. Its first
+// corner read the next face's, or past the loops (ASan, manifold_fuzzer).
 void Hull::take_plane_offsets() {
   Shape& shape = *shape_;
   shape.plane_offsets.resize(shape.face_normals.size());
-  for (int f = 0; f < face_count(); ++f) shape.plane_offsets[f] = face_normal(f).dot(vertex(face_vertex(f, 0)));
+  for (int f = 0; f < face_count(); ++f)
+    shape.plane_offsets[f] = face_size(f) > 0 ? face_normal(f).dot(vertex(face_vertex(f, 0))) : 0.0;
 }
 
 mfz_hull Hull::view() const {
