@@ -499,14 +499,14 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
   std::vector<std::string> arguments = {
       "-fork=" + std::to_string(options.jobs), "-ignore_crashes=1", "-ignore_timeouts=1", "-ignore_ooms=1",
       "-artifact_prefix=" + (work / "artefacts").string() + "/", "-timeout=" + std::to_string(kInputTimeoutSeconds),
-      "-rss_limit_mb=" + std::to_string(kMemoryLimitMb), "-max_len=" + std::to_string(fuzz_input_size(kFuzzMaxPoints, kFuzzMaxPoints)),
+      "-rss_limit_mb=" + std::to_string(kMemoryLimitMb), "-max_len=" + std::to_string(fuzz_input_size(options.max_points, options.max_points)),
       "-entropic_feature_frequency_threshold=" + std::to_string(kRareFeatureHits), "-print_final_stats=1"};
   if (options.seconds) arguments.push_back("-max_total_time=" + std::to_string(std::max(1LL, std::llround(*options.seconds))));
   arguments.push_back((work / "new").string());
   arguments.push_back(options.corpus_dir);
   catch_interruptions();
   log << "manifuzz fuzz: generator " << generator->name() << ", " << options.jobs << " job"
-      << (options.jobs > 1 ? "s" : "") << ", profile " << options.profile.text() << ", corpus " << options.corpus_dir << ", findings into " << options.out_dir
+      << (options.jobs > 1 ? "s" : "") << ", hulls of at most " << options.max_points << " points, profile " << options.profile.text() << ", corpus " << options.corpus_dir << ", findings into " << options.out_dir
       << (options.seconds ? "" : "; Ctrl-C stops") << "\n";
   std::vector<std::string> environment = fuzzer_environment(options);
   environment.push_back("TMPDIR=" + scratch.path().string());

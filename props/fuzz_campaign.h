@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "case_property.h"
+#include "fuzz_input.h"
 #include "harness/run_statistics.h"
 
 namespace mfz::props {
@@ -20,6 +21,13 @@ struct FuzzOptions {
   std::string fuzzer;                ///< the manifold_fuzzer program
   std::optional<double> seconds;     ///< of the whole run, minimising included; none: until Ctrl-C
   int jobs = 1;
+  /// --max-points: the most points either hull of an input has (4 to
+  /// kFuzzMaxPoints), libFuzzer's -max_len. Hulls of at most 8 points run
+  /// about three times as many executions a second as the inputs of 30 to
+  /// 64 points a campaign grows towards, and reached F62 and a hull
+  /// builder's overflow within 30 s each, which campaigns of the full size
+  /// had not (stop 68).
+  int max_points = kFuzzMaxPoints;
   std::string corpus_dir = "fuzz-corpus";
   std::string out_dir = "failures";
   double call_timeout = 5;

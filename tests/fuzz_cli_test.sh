@@ -15,12 +15,14 @@ failures=0 checks=0
 fail() { failures=$((failures + 1)); printf 'FAILED: %s\n' "$*"; }
 check() { checks=$((checks + 1)); "$@" || fail "$*"; }
 
-# 1. A broken generator (normals the wrong way) is found and minimised.
-out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 12 --jobs 2 \
+# 1. A broken generator (normals the wrong way) is found and minimised, on
+# hulls of at most 8 points (--max-points: libFuzzer's -max_len).
+out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 12 --jobs 2 --max-points 8 \
         --corpus "$scratch/corpus-sign" --out "$scratch/found" --minimise-seconds 3 --report "$scratch/fuzz-report" \
         2>"$scratch/fuzz.log")
 status=$?
 check test "$status" -eq 1
+check grep -q "hulls of at most 8 points" "$scratch/fuzz.log"
 finding=$(sed -n 's/^VIOLATION [^ ]* //p' <<<"$out" | head -1)
 check test -f "$finding"
 check grep -q "^note found by: manifuzz fuzz --generator" "$finding"
@@ -111,7 +113,7 @@ check test ! -e "/dev/shm/manifuzz-fuzz-$fuzzing"
 check test -z "$(ls -A "$scratch/out-int" | grep '^\.fuzz-' || true)"
 
 # 6. Bad input: one line, exit 2.
-for args in "--jobs 0" "--seconds 0" "--seconds x" "--corpus ''" "--frobnicate"; do
+for args in "--jobs 0" "--seconds 0" "--seconds x" "--corpus ''" "--frobnicate" "--max-points 3" "--max-points 65"; do
   eval "\"$manifuzz\" fuzz $args" >/dev/null 2>"$scratch/err"
   status=$?
   check test "$status" -eq 2

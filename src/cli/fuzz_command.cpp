@@ -1,4 +1,4 @@
-// manifuzz fuzz --generator G [--seconds T] [--jobs J] [--corpus DIR] [--out DIR] [--strict]
+// manifuzz fuzz --generator G [--seconds T] [--jobs J] [--max-points N] [--corpus DIR] [--out DIR] [--strict]
 // libFuzzer's manifold_fuzzer in fork mode on J cores (props/fuzz_campaign.h).
 // The fuzzer program comes with the clang build (beside this manifuzz) or
 // is named by MANIFUZZ_FUZZER.
@@ -22,7 +22,7 @@ namespace mfz::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: manifuzz fuzz --generator G [--seconds T] [--jobs J] [--corpus DIR] [--out DIR] [--strict] [--profile P] [--report DIR]";
+    "usage: manifuzz fuzz --generator G [--seconds T] [--jobs J] [--max-points N] [--corpus DIR] [--out DIR] [--strict] [--profile P] [--report DIR]";
 
 int fail(const std::string& why) {
   std::cerr << "manifuzz fuzz: " << why << "\n";
@@ -110,7 +110,7 @@ void write_fuzz_report(const std::string& dir, const props::FuzzOptions& options
 int fuzz_command(const std::vector<std::string>& words) {
   std::string error;
   const auto args = parse_arguments(
-      words, {"--generator", "--seconds", "--jobs", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile", "--junit", "--confirm-with", "--report"},
+      words, {"--generator", "--seconds", "--jobs", "--max-points", "--corpus", "--out", "--call-timeout", "--minimise-seconds", "--profile", "--junit", "--confirm-with", "--report"},
       {"--strict", "--quiet"}, error);
   if (!args) return fail(error + " (" + kUsage + ")");
   if (!args->positional.empty()) return fail("unexpected argument " + mfz::quoted(args->positional[0]) + " (" + kUsage + ")");
@@ -132,6 +132,11 @@ int fuzz_command(const std::vector<std::string>& words) {
   const auto jobs = parse_count(args->get("--jobs", "1"), 1, 4 * cores);
   if (!jobs) return fail("--jobs takes a whole number from 1 to " + std::to_string(4 * cores));
   options.jobs = static_cast<int>(*jobs);
+  const auto max_points = parse_count(args->get("--max-points", std::to_string(props::kFuzzMaxPoints)), 4,
+                                      props::kFuzzMaxPoints);
+  if (!max_points)
+    return fail("--max-points takes a whole number from 4 to " + std::to_string(props::kFuzzMaxPoints));
+  options.max_points = static_cast<int>(*max_points);
   const auto timeout = call_timeout(*args, error);
   if (!timeout) return fail(error);
   options.call_timeout = *timeout;
