@@ -8,6 +8,7 @@
 #include <cmath>
 #include <vector>
 
+#include "geometry/loop_corners.h"
 #include "test_support.h"
 
 namespace mfz {
@@ -54,6 +55,16 @@ TEST(PolygonCore, GivesTheClosestPointTheInsideTestGives) {
   // Both ways were taken, many times each.
   EXPECT_GT(by_core, 1000);
   EXPECT_GT(by_test, 1000);
+}
+
+// The corners either side, without a division, are the remainders' corners
+// on every loop a face can have (3 to a hull's 1,024 points).
+TEST(LoopCorners, NextAndPreviousAreTheRemaindersAroundTheLoop) {
+  for (int n = 1; n <= 1024; ++n)
+    for (int k = 0; k < n; ++k) {
+      ASSERT_EQ(next_corner(k, n), (k + 1) % n) << k << " of " << n;
+      ASSERT_EQ(previous_corner(k, n), (k + n - 1) % n) << k << " of " << n;
+    }
 }
 
 TEST(PolygonCore, IsEmptyForADegenerateLoop) {

@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/closest_point.h"
+#include "geometry/loop_corners.h"
 
 namespace mfz {
 namespace {
@@ -47,7 +48,7 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
   // call).
   const auto inside = [&](int k) {
     return d[k] <= on_plane ||
-           (d[k] <= in_plane_band && (lies_in_plane((k + n - 1) % n, k) || lies_in_plane(k, (k + 1) % n)));
+           (d[k] <= in_plane_band && (lies_in_plane(previous_corner(k, n), k) || lies_in_plane(k, next_corner(k, n))));
   };
   bool ok = true;
   Vec3 start = in[n - 1];
@@ -172,8 +173,8 @@ void reduce_polygon(ClipPolygon& polygon, int capacity) {
     int weakest = 0;
     double least = std::numeric_limits<double>::infinity();
     for (int k = 0; k < n; ++k) {
-      const Vec3& prev = polygon[(k + n - 1) % n];
-      const Vec3& next = polygon[(k + 1) % n];
+      const Vec3& prev = polygon[previous_corner(k, n)];
+      const Vec3& next = polygon[next_corner(k, n)];
       const double area = (polygon[k] - prev).cross(next - polygon[k]).norm();
       if (area < least) least = area, weakest = k;
     }

@@ -10,6 +10,7 @@
 #include "generator/contact_output.h"
 #include "generator/coplanar_patch.h"
 #include "generator/last_resort_contact.h"
+#include "geometry/loop_corners.h"
 #include "geometry/tolerances.h"
 
 namespace mfz {
@@ -277,7 +278,7 @@ void keep_outline_and_deepest(ClipPolygon& points, const Plane& reference_plane,
 
 double loop_perimeter(const ClipPolygon& loop) {
   double perimeter = 0;
-  for (int k = 0; k < loop.size(); ++k) perimeter += (loop[(k + 1) % loop.size()] - loop[k]).norm();
+  for (int k = 0; k < loop.size(); ++k) perimeter += (loop[next_corner(k, loop.size())] - loop[k]).norm();
   return perimeter;
 }
 
@@ -492,7 +493,7 @@ SideBands side_bands(const ClipFace& reference, const ClipPolygon& incident) {
 bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edge) {
   const ClipPolygon& loop = *reference.polygon;
   const Vec3& from = loop[k];
-  const Vec3& to = loop[(k + 1) % loop.size()];
+  const Vec3& to = loop[next_corner(k, loop.size())];
   edge = {from, to};
   // The loop runs counter-clockwise about the outward normal, so edge x
   // normal points out of the face, in its plane. Its length is the edge's
@@ -520,7 +521,7 @@ bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& ca
   constexpr double kEdgeOverRounding = 1e3;
   const int n = loop.size();
   const Vec3& corner = loop[k];
-  const Vec3 in = corner - loop[(k + n - 1) % n], out = loop[(k + 1) % n] - corner;
+  const Vec3 in = corner - loop[previous_corner(k, n)], out = loop[next_corner(k, n)] - corner;
   // Every corner is tested, on every call: in squares, with no root or
   // quotient until a corner proves sharp.
   if (!(in.dot(out) < 0)) return false;  // a right or obtuse corner
@@ -553,10 +554,10 @@ bool short_edge_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap)
   constexpr double kEdgeOverRounding = 1e3;
   const int n = loop.size();
   const Vec3& from = loop[k];
-  const Vec3& to = loop[(k + 1) % n];
+  const Vec3& to = loop[next_corner(k, n)];
   const double shortest = kEdgeOverRounding * rounding;
   if (!((to - from).squaredNorm() <= shortest * shortest)) return false;
-  const Vec3 in = from - loop[(k + n - 1) % n], out = loop[(k + 2) % n] - to;
+  const Vec3 in = from - loop[previous_corner(k, n)], out = loop[next_corner(next_corner(k, n), n)] - to;
   if (!(std::min(in.squaredNorm(), out.squaredNorm()) > shortest * shortest)) return false;
   const Vec3 across = in.normalized() - out.normalized();
   if (!(across.squaredNorm() > tol::kTie * tol::kTie)) return false;

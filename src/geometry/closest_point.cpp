@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/loop_corners.h"
+
 namespace mfz {
 
 Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
@@ -93,7 +95,7 @@ namespace {
   bool inside = true;
   for (int k = 0; k < count && inside; ++k) {
     const Vec3& a = loop[k];
-    const Vec3& b = loop[(k + 1) % count];
+    const Vec3& b = loop[next_corner(k, count)];
     // Counter-clockwise about the normal: inside is to the left of every edge.
     inside = (b - a).cross(projected - a).dot(normal) >= 0;
   }
@@ -101,7 +103,7 @@ namespace {
   Vec3 best = loop[0];
   double best_sq = std::numeric_limits<double>::infinity();
   for (int k = 0; k < count; ++k) {
-    const Vec3 c = closest_on_segment(p, loop[k], loop[(k + 1) % count]);
+    const Vec3 c = closest_on_segment(p, loop[k], loop[next_corner(k, count)]);
     const double d = (c - p).squaredNorm();
     if (d < best_sq) best_sq = d, best = c;
   }
@@ -130,7 +132,7 @@ PolygonCore polygon_core(const Vec3* loop, int count, const Vec3& normal) {
   double nearest = std::numeric_limits<double>::infinity(), reach = 0;
   for (int k = 0; k < count; ++k) {
     const Vec3& a = loop[k];
-    const Vec3 edge = loop[(k + 1) % count] - a;
+    const Vec3 edge = loop[next_corner(k, count)] - a;
     reach = std::max(reach, (a - centre).norm());
     const double length = edge.norm();
     if (!(length > 0)) continue;  // a repeated corner: its value is 0, which passes
