@@ -106,6 +106,21 @@ if $have_mutants; then
 fi
 
 expect_one_line_error 'line 5' -- "$manifuzz" replay "$scratch/short_line.case"
+# Two boxes 1e4 across touching face to face, turned: SAT picks a face, the
+# clip leaves nothing below it, and the supporting edges give the contact
+# (F16). explain says so and shows the clip, not an edge-edge axis (stop 68).
+{
+  printf 'manifuzz-case 1\nhull A\n'
+  printf 'v %s\n' '-5000 -5000 -5000' '-5000 -5000 5000' '-5000 5000 -5000' '-5000 5000 5000' '5000 -5000 -5000' \
+    '5000 -5000 5000' '5000 5000 -5000.000000000002' '5000.00001 5000.00001 5000.00001'
+  printf 'pose A 13419.364994794078 -4823.464598135858 3089.2698921083243 0.9004471023526769 0.11624942883566838 0.23249885767133677 0.3487482865070052\n'
+  printf 'hull B\n'
+  printf 'v %s\n' '-4999.999991400951 -4999.999992801637 -4999.999986800003' '-5000 -5000 5000' '-5000 5000 -5000' \
+    '-5000 5000 5000' '5000 -5000 -5000.984375' '5000 -5000 5000' '5000 5000 -5000' '5000.00001 5000.00001 5000.00001'
+  printf 'pose B 7679.334491527039 2473.7494687093867 6804.470678633839 0.9004471023526769 0.11624942883566838 0.23249885767133677 0.3487482865070052\n'
+} >"$scratch/edges_beyond_the_face.case"
+expect 0 'Clipping left no point below the reference face' -- "$manifuzz" explain "$scratch/edges_beyond_the_face.case"
+expect 0 'Sutherland-Hodgman clipping' -- "$manifuzz" explain "$scratch/edges_beyond_the_face.case"
 expect_one_line_error 'fewer than four' -- "$manifuzz" explain "$scratch/three_points.case"
 expect_one_line_error 'cannot load generator' -- "$manifuzz" replay --generator "$scratch/text.so" "$good"
 fi

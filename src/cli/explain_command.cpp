@@ -56,11 +56,17 @@ void describe_clipping(std::ostream& out, const CaseRun& run) {
   out << "\n2. The built-in generator's SAT picks " << axis_kind_name(sat.kind) << " (A feature " << sat.feature_a
       << ", B feature " << sat.feature_b << "):\n     n = " << vec_text(sat.normal) << " (from A to B), "
       << (sat.separated ? "separating overlap " : "depth ") << sat.depth << "\n";
-  if (trace.edge_contact) {
+  if (trace.edge_contact && sat.kind == AxisKind::edge_edge) {
     out << "   An edge-edge axis: the contact is the closest pair of points of the edge of A furthest along n\n"
         << "   and the edge of B furthest along -n (FINDINGS.md F3); no faces are clipped.\n";
     return;
   }
+  // A face axis whose clipping left nothing below the reference face: the
+  // supporting edges gave the contact (F16). Said as an edge-edge axis, it
+  // read as though SAT had picked one (stop 68, F62's case under rigid-motion).
+  if (trace.edge_contact)
+    out << "   Clipping left no point below the reference face (the edges cross just beyond it, FINDINGS.md F16):\n"
+        << "   the contact is the closest pair of points of the edges supporting A along n and B along -n.\n";
   if (sat.separated || trace.face_a < 0) {
     out << "   No penetration, so no contacts.\n";
     return;
