@@ -152,6 +152,17 @@ TEST(BuiltinGenerator, ACallUsesUnder64KiBOfStack) {
     s.hull_b = fan_triangulated(s.hull_b);
     scenes.push_back(std::move(s));
   }
+  // Two tetrahedra 1e4 long just touching, turned (F62's case under
+  // rigid-motion): clipping, the supporting edges and the deepest point
+  // give nothing, and F39's pass measures every edge pair, 64 at a time
+  // (a 6 KB frame since stop 68).
+  CaseFile touching;
+  touching.points_a = {{0, 0, 0}, {-5000, 5000, 0}, {-5000, 5000, 5000}, {5000, 5000.00001, 5000.00001}};
+  touching.points_b = {{0, 0, 0}, {0, -5000, 5000}, {0, 0, 0}, {5000, -5000, -5000.984375}, {5000, -5000, 5000}};
+  const Quat turned(0.9004471023526769, 0.11624942883566838, 0.23249885767133677, 0.3487482865070052);
+  touching.pose_a = {Vec3(9121.465741890639, -2981.507775462955, 1861.2986769930556), turned};
+  touching.pose_b = {Vec3(3381.4352386235996, 4315.70629138229, 5576.49946351857), turned};
+  scenes.push_back(std::move(*make_scene(touching).scene));
   const size_t used = stack_bytes_used([&] {
     mfz_manifold out;
     for (const Scene& s : scenes) {
