@@ -15,14 +15,12 @@ failures=0 checks=0
 fail() { failures=$((failures + 1)); printf 'FAILED: %s\n' "$*"; }
 check() { checks=$((checks + 1)); "$@" || fail "$*"; }
 
-# 1. A broken generator (normals the wrong way) is found and minimised, on
-# hulls of at most 8 points (--max-points: libFuzzer's -max_len).
-out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 12 --jobs 2 --max-points 8 \
+# 1. A broken generator (normals the wrong way) is found and minimised.
+out=$("$manifuzz" fuzz --generator "$plugins/libmfz_mutant_normal_sign.so" --seconds 12 --jobs 2 \
         --corpus "$scratch/corpus-sign" --out "$scratch/found" --minimise-seconds 3 --report "$scratch/fuzz-report" \
         2>"$scratch/fuzz.log")
 status=$?
 check test "$status" -eq 1
-check grep -q "hulls of at most 8 points" "$scratch/fuzz.log"
 finding=$(sed -n 's/^VIOLATION [^ ]* //p' <<<"$out" | head -1)
 check test -f "$finding"
 check grep -q "^note found by: manifuzz fuzz --generator" "$finding"
@@ -60,8 +58,16 @@ check test -f "$scratch/regressions/from-raw.case"
 check test $? -eq 2
 check grep -q "nothing to promote" "$scratch/err"
 
-# 3. A campaign grows its corpus; the next one resumes from it.
-"$manifuzz" fuzz --seconds 6 --corpus "$scratch/corpus" --out "$scratch/out" >/dev/null 2>"$scratch/first.log"
+# 3. A campaign grows its corpus, here on hulls of at most 8 points
+# (--max-points: libFuzzer's -max_len); the next one resumes from it. Its
+# status is not asked: on small hulls the built-in has open findings
+# (corpus/open/). Step 1 ran small in stop 68, and in one of four CI runs a
+# check of steps 1-2 got status 1 where it wanted 0; a case shrunk from the
+# broken generator's finding may land where the built-in has one of them,
+# so steps 1 and 2 keep the full size.
+"$manifuzz" fuzz --seconds 6 --max-points 8 --corpus "$scratch/corpus" --out "$scratch/out" >/dev/null \
+  2>"$scratch/first.log"
+check grep -q "hulls of at most 8 points" "$scratch/first.log"
 grown=$(ls "$scratch/corpus" | wc -l)
 check test "$grown" -gt 17
 "$manifuzz" fuzz --seconds 3 --corpus "$scratch/corpus" --out "$scratch/out" >/dev/null 2>"$scratch/second.log"
