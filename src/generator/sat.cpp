@@ -144,12 +144,13 @@ bool consider_edge_pair(const PosedHull& a, const PosedHull& b, int ea, int a0, 
 
 // A stretch of B's edges against one edge of A, measured as
 // consider_edge_pair measures each pair, with the same bits, but in vector
-// lanes: the axes made unit (normalise_axes) and both hulls projected
-// (PosedHull::project_onto_axes) all at once, then the pairs considered in
-// order. A pair at a time, each waited on its square roots, its divisions
-// and two projections: F39's pass over every pair of two 51-point hulls
-// just touching took 1.5 million instructions a call, a third of a fuzz
-// execution where it ran (manifold_fuzzer, the grown corpus).
+// lanes: the pairs' axes go into a batch (edge_pair_batch.h), which makes
+// them unit and projects both hulls onto all of them at once, then the
+// pairs are considered in order. A pair at a time, each waited on its
+// square roots, its divisions and two projections: F39's pass over every
+// pair of two 51-point hulls just touching took 1.5 million instructions a
+// call, a third of a fuzz execution where it ran (manifold_fuzzer, the
+// grown corpus).
 class EdgePairStretch {
  public:
   static constexpr int kPairs = 64;
@@ -161,48 +162,44 @@ class EdgePairStretch {
     ea_ = ea, a0_ = a0, a1_ = a1, face_a_ = face;
     edge_a_ = world_edge(a_, a0, a1);
     length_a_ = edge_a_.norm();
-    count_ = 0;
+    batch_.clear();
   }
   // Adds B's edge eb (v0 -> v1 of `face`); false once the stretch is full.
   bool add(int eb, int b0, int b1, int face) {
     const Vec3 edge_b = world_edge(b_, b0, b1);
-    const Vec3 axis = edge_a_.cross(edge_b);
-    pairs_[count_] = {eb, b0, b1, face};
-    ax_[count_] = axis.x(), ay_[count_] = axis.y(), az_[count_] = axis.z();
-    length_b_[count_] = edge_b.norm();
-    return ++count_ < kPairs;
+    edges_b_[batch_.size()] = {b0, b1, face, edge_b.norm()};
+    batch_.add(ea_, eb, edge_a_.cross(edge_b));
+    return batch_.has_room_for(1);
   }
   // Considers the stretch's pairs in order, and empties it; false once one
   // separates the hulls.
   bool consider_all(SatResult& best) {
-    const int count = count_;
-    count_ = 0;
-    if (count == 0) return true;
-    normalise_axes(ax_, ay_, az_, count, length_);
-    a_.project_onto_axes(ax_, ay_, az_, count, low_a_, high_a_);
-    b_.project_onto_axes(ax_, ay_, az_, count, low_b_, high_b_);
-    for (int k = 0; k < count; ++k) {
-      if (parallel_edges(length_a_, length_b_[k], length_[k])) continue;
-      const Pair& pair = pairs_[k];
-      const bool apart = !consider_projected_pair(
-          a_, b_, {low_a_[k], high_a_[k]}, {low_b_[k], high_b_[k]}, Vec3(ax_[k], ay_[k], az_[k]), ea_, pair.eb,
-          best, [&] { return a_.is_flat_edge(a0_, a1_, face_a_) || b_.is_flat_edge(pair.b0, pair.b1, pair.face); });
-      if (apart) return false;
+    batch_.project(a_, b_);
+    bool apart = false;
+    for (int k = 0; k < batch_.size() && !apart; ++k) {
+      const EdgeOfB& edge = edges_b_[k];
+      if (parallel_edges(length_a_, edge.length, batch_.axis_length(k))) continue;
+      apart = !consider_projected_pair(a_, b_, batch_.projection_a(k), batch_.projection_b(k), batch_.axis(k), ea_,
+                                       batch_.arc_b(k), best, [&] {
+                                         return a_.is_flat_edge(a0_, a1_, face_a_) ||
+                                                b_.is_flat_edge(edge.v0, edge.v1, edge.face);
+                                       });
     }
-    return true;
+    batch_.clear();
+    return !apart;
   }
 
  private:
-  struct Pair {
-    int eb, b0, b1, face;
+  struct EdgeOfB {
+    int v0, v1, face;
+    double length;
   };
   const PosedHull &a_, &b_;
-  int ea_ = -1, a0_ = -1, a1_ = -1, face_a_ = -1, count_ = 0;
+  int ea_ = -1, a0_ = -1, a1_ = -1, face_a_ = -1;
   Vec3 edge_a_ = Vec3::Zero();
   double length_a_ = 0;
-  Pair pairs_[kPairs];
-  double ax_[kPairs], ay_[kPairs], az_[kPairs], length_[kPairs], length_b_[kPairs];
-  double low_a_[kPairs], high_a_[kPairs], low_b_[kPairs], high_b_[kPairs];
+  EdgePairBatchOf<kPairs> batch_;
+  EdgeOfB edges_b_[kPairs];
 };
 
 // Every edge pair: the reference the pruning is checked against, the
