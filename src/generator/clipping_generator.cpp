@@ -996,7 +996,7 @@ int32_t generate_in_frame(const mfz_hull& hull_a, const Pose& pose_a, const mfz_
   // beyond the reference face (a fold of 1e-9 rad in the other hull), and the
   // prism clips everything away. The supporting edges then give the contact.
   if (out.contact_count == 0 && steps.edge_contact(a, b, sat, out) && trace) trace->edge_contact = true;
-  if (out.contact_count == 0) deepest_point_contact(a, b, n, flipped, out);
+  if (out.contact_count == 0) deepest_point_contact(a, b, n, sat.depth, flipped, out);
   if (out.contact_count == 0) least_edge_axis_contact(a, b, sat, out, trace, steps);
   return 0;
 }
