@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "case/case_file.h"
 #include "geometry/tolerances.h"
 #include "oracles/contact_region.h"
 #include "test_support.h"
@@ -222,6 +223,37 @@ TEST_F(InvariantFires, ATransformedRunIsReportedByItsFirstFailingCheck) {
   ASSERT_TRUE(depth);
   EXPECT_EQ(depth->name, "depth-exact");
   EXPECT_EQ(depth->detail, "depth 0.2, exact 0.1");
+}
+
+// Where the least axis is an edge pair of nearly parallel edges, depth-exact
+// gives the depth the room the frame's rounding leaves along that axis: two
+// needles 2,300 long 1e-8 rad apart (h31). A depth half that room away
+// passes, one twice the room away fails; on the box resting on a slab,
+// whose least axis is a face's, there is no room.
+TEST(DepthExact, TakesTheRoomOfTheLeastEdgePairAndNoMore) {
+  const CaseParse parsed = read_case_file(test::corpus_path(
+      "regressions/h31-two-needles-1e-8-rad-apart-an-edge-pair-s-depth-known-to-its-rounding-over-the-sine.case"));
+  ASSERT_TRUE(parsed.value) << parsed.error;
+  const CaseRun run = test::run_builtin(*parsed.value);
+  const LeastEdgePair& pair = run.oracles.least_edge_pair;
+  ASSERT_TRUE(pair.present);
+  EXPECT_LT(pair.sine, 1e-7);
+  EXPECT_GT(pair.shorter_edge, 1000);
+  const double room = pair.depth_room(run.scene.rounding());
+  EXPECT_GT(room, 100 * run.scene.length_tolerance(tol::kDepth));
+  const auto with_depth = [&](double depth) {
+    mfz_manifold m = run.manifold;
+    m.penetration = -depth;
+    for (int i = 0; i < m.contact_count; ++i) m.contacts[i].penetration = std::max(m.contacts[i].penetration, -depth);
+    return status_in(check_manifold(run.scene, run.oracles, 0, m), "depth-exact");
+  };
+  const double exact = run.oracles.exact.signed_depth;
+  EXPECT_EQ(with_depth(exact + 0.5 * room), CheckStatus::pass);
+  EXPECT_EQ(with_depth(exact + 2 * room), CheckStatus::fail);
+  const CaseRun box = test::run_builtin(test::make_case(box_points(2, 2, 0.5), {}, box_points(0.5, 0.5, 0.5),
+                                                        {Vec3(0, 0, 0.9), Quat::Identity()}));
+  EXPECT_FALSE(box.oracles.least_edge_pair.present);
+  EXPECT_EQ(box.oracles.least_edge_pair.depth_room(box.scene.rounding()), 0);
 }
 
 TEST(InvariantVerdict, EveryContractInvariantIsChecked) {

@@ -255,9 +255,21 @@ InvariantCheck check_agrees_with_gjk(const Context& c) {
                                             : "not colliding, but GJK and the exact oracle say intersecting"));
 }
 
+// Where the least axis is an edge pair, its cross product is known only to
+// the frame's rounding over the shorter edge and the sine of their angle,
+// and the overlap along it, a corner of the support function, grows by that
+// turn times the hulls' reach: the oracle's depth and the generator's are
+// each that much above the true one at most. Two needles 2,300 long and
+// 1e-4 across lay 4.1e-8 rad apart; turned and moved 1,600 out (the
+// rounding there 5.2e-11), the built-in took a face axis 3.85e-5 deep where
+// the oracle's edge pair gave 3.46e-5, 1.7e-9 L apart, in a frame where
+// that pair is known to 5.5e-7 rad and its overlap to 2.5e-3 (h31,
+// rigid-motion, manifold_fuzzer on 5- to 12-point hulls, open as O32; ODE's
+// SAT failed the case itself by 1.7e-9 L).
 InvariantCheck check_depth_exact(const Context& c) {
   if (!c.colliding) return skipped("not colliding");
-  const double tol = c.scene.length_tolerance(tol::kDepth);
+  const double tol =
+      c.scene.length_tolerance(tol::kDepth) + c.oracles.least_edge_pair.depth_room(c.scene.rounding());
   const double excess = c.depth - c.oracles.exact.signed_depth, bias = c.face_bias_allowance();
   // face-bias: a face axis may be deeper than the exact depth by its fraction.
   const double err = excess > 0 ? std::max(0.0, excess - bias) : -excess;
@@ -626,6 +638,7 @@ std::optional<InvariantCheck> check_transformed_manifold(const Scene& scene, con
   known.touching = original.touching;
   known.face_contact = original.face_contact;
   known.ties = original.ties;
+  known.least_edge_pair = original.least_edge_pair;
   const Context c{scene, known, m, profile, scene.scale, to_vec(m.normal), -m.penetration, m.colliding == 1,
                   /*pass_details=*/false};
   // "finite" comes first: past a failure nothing else runs, so no check

@@ -15,6 +15,22 @@
 
 namespace mfz {
 
+/// The least axis's own edges, where it is an edge pair: the frame's
+/// rounding turns their cross product by that rounding over the shorter
+/// edge and the sine of their angle, and so moves a contact on them and the
+/// overlap along the axis (invariants.h, depth-exact; the relations).
+struct LeastEdgePair {
+  bool present = false;
+  double sine = 0;          ///< of the angle between the two edges
+  double shorter_edge = 0;  ///< the shorter one's length
+  /// sine x shorter edge / L: the same in every frame a relation makes.
+  double conditioning = INFINITY;
+  /// How far the overlap along the axis may move with the frame's `rounding`:
+  /// the axis turns by rounding / (shorter edge x sine), and the overlap by
+  /// that turn times the hulls' reach along it, 2 L at most.
+  double depth_room(double rounding) const { return present ? 2 * rounding / conditioning : 0; }
+};
+
 /// Everything the checks compare a manifold against, computed once per case.
 struct OracleAnswers {
   ExactDepth exact;
@@ -27,6 +43,7 @@ struct OracleAnswers {
   bool axis_tie = false;  ///< two distinct minimal axes (tolerances.h kTie)
   /// The contract's ties, classified (ties.h).
   Ties ties;
+  LeastEdgePair least_edge_pair;
   /// A face axis is among the minimal candidates along the best direction:
   /// the hulls first touch at a face, and the contact region is well defined.
   bool face_contact = false;
