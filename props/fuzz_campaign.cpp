@@ -472,12 +472,103 @@ void print_summary(std::ostream& log, const FuzzOptions& o, const FuzzResult& r)
         << ", first after " << static_cast<long long>(f.after_seconds) << " s: " << f.case_path << "\n";
 }
 
+// The caps of a growing campaign's phases (FuzzOptions::least_points): from
+// the least, doubling, to the most; one phase of the most without it.
+std::vector<int> phase_caps(const FuzzOptions& o) {
+  std::vector<int> caps;
+  if (o.least_points > 0)
+    for (int cap = o.least_points; cap < o.max_points; cap *= 2) caps.push_back(cap);
+  caps.push_back(o.max_points);
+  return caps;
+}
+
+// What one run of the engine leaves besides the result it adds to.
+struct PhaseEnd {
+  bool started = false;  ///< false: the engine did not start, and `error` says why
+  int exit_status = 0;
+  std::string first_error;  ///< the engine's first error line, if any
+};
+
+// One run of libFuzzer in fork mode on hulls of at most `cap` points, for
+// `seconds` (0: until Ctrl-C): new inputs into the work folder, the
+// user's corpus read from where it is, every crash, hang and OOM kept going,
+// its status, corpus and artefacts watched. Its executions add to the
+// result's, counted from `before` (the phases run so far); its coverage,
+// read from the shared corpus, stands for all of them.
+PhaseEnd run_phase(const FuzzOptions& options, int cap, double seconds, int phase,
+                   const fs::path& work, const EngineScratch& scratch, Campaign& campaign, Clock::time_point started,
+                   std::set<std::string>& known, FuzzResult& result, std::ostream& log, std::string& error) {
+  PhaseEnd end;
+  std::vector<std::string> arguments = {
+      "-fork=" + std::to_string(options.jobs), "-ignore_crashes=1", "-ignore_timeouts=1", "-ignore_ooms=1",
+      "-artifact_prefix=" + (work / "artefacts").string() + "/", "-timeout=" + std::to_string(kInputTimeoutSeconds),
+      "-rss_limit_mb=" + std::to_string(kMemoryLimitMb), "-max_len=" + std::to_string(fuzz_input_size(cap, cap)),
+      "-entropic_feature_frequency_threshold=" + std::to_string(kRareFeatureHits), "-print_final_stats=1"};
+  if (seconds > 0) arguments.push_back("-max_total_time=" + std::to_string(std::max(1LL, std::llround(seconds))));
+  arguments.push_back((work / "new").string());
+  arguments.push_back(options.corpus_dir);
+  std::vector<std::string> environment = fuzzer_environment(options);
+  environment.push_back("TMPDIR=" + scratch.path().string());
+  const fs::path engine_log = work / ("engine-" + std::to_string(phase) + ".log");
+  EngineProcess engine(options.fuzzer, arguments, environment, engine_log.string());
+  if (!engine.started()) {
+    error = "cannot start " + quoted(options.fuzzer, 4096);
+    return end;
+  }
+  end.started = true;
+  LogTail tail(engine_log.string());
+  EngineStats stats;
+  const long long before = result.execs;
+  const auto so_far = [&](const EngineStats& now) {
+    EngineStats all = now;
+    all.execs += before;
+    return all;
+  };
+  double last_sync = since(started), last_progress = since(started), last_sample = since(started);
+  while (engine.running() && !interrupted()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    for (const std::string& line : tail.new_lines()) {
+      read_status(line, stats);
+      if (end.first_error.empty() &&
+          (line.find("ERROR") != std::string::npos || line.rfind("manifold_fuzzer:", 0) == 0))
+        end.first_error = line;
+    }
+    const double now = since(started);
+    if (now - last_sample >= 1) last_sample = now, result.statistics.sample(now, before + stats.execs, stats.coverage);
+    if (now - last_sync >= kSyncEvery) {
+      last_sync = now;
+      result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
+      result.corpus_inputs = static_cast<int>(known.size());
+      campaign.scan_artefacts(now, result);
+    }
+    if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
+      last_progress = now;
+      print_progress(log, now, so_far(stats), result, engine.resident_mb());
+    }
+  }
+  // Stop cleanly and keep what was found.
+  end.exit_status = engine.exit_status();
+  engine.stop();
+  for (const std::string& line : tail.new_lines()) read_status(line, stats);
+  result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
+  result.corpus_inputs = static_cast<int>(known.size());
+  if (!interrupted()) campaign.scan_artefacts(since(started), result);
+  result.execs = before + stats.execs;
+  result.coverage = stats.coverage;
+  result.features = stats.features;
+  return end;
+}
+
 }  // namespace
 
 std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, std::ostream& findings_out,
                                    std::string& error) {
   FuzzOptions options = given;
   // 1. Everything that can fail fails before the fuzzer starts.
+  if (options.least_points > 0 && !options.seconds) {
+    error = "a campaign that grows its hulls needs --seconds";
+    return std::nullopt;
+  }
   if (!prepare_out_dir(options.out_dir, error)) return std::nullopt;
   std::error_code ec;
   fs::create_directories(options.corpus_dir, ec);
@@ -493,37 +584,6 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
   seed_if_empty(options.corpus_dir);
   const fs::path work = make_work_folder(options.out_dir);
   const EngineScratch scratch(work);
-
-  // 2. libFuzzer in fork mode: new inputs into the work folder, the user's
-  // corpus read from where it is, every crash, hang and OOM kept going.
-  std::vector<std::string> arguments = {
-      "-fork=" + std::to_string(options.jobs), "-ignore_crashes=1", "-ignore_timeouts=1", "-ignore_ooms=1",
-      "-artifact_prefix=" + (work / "artefacts").string() + "/", "-timeout=" + std::to_string(kInputTimeoutSeconds),
-      "-rss_limit_mb=" + std::to_string(kMemoryLimitMb), "-max_len=" + std::to_string(fuzz_input_size(options.max_points, options.max_points)),
-      "-entropic_feature_frequency_threshold=" + std::to_string(kRareFeatureHits), "-print_final_stats=1"};
-  if (options.seconds) arguments.push_back("-max_total_time=" + std::to_string(std::max(1LL, std::llround(*options.seconds))));
-  arguments.push_back((work / "new").string());
-  arguments.push_back(options.corpus_dir);
-  catch_interruptions();
-  log << "manifuzz fuzz: generator " << generator->name() << ", " << options.jobs << " job"
-      << (options.jobs > 1 ? "s" : "") << ", hulls of at most " << options.max_points << " points, profile " << options.profile.text() << ", corpus " << options.corpus_dir << ", findings into " << options.out_dir
-      << (options.seconds ? "" : "; Ctrl-C stops") << "\n";
-  std::vector<std::string> environment = fuzzer_environment(options);
-  environment.push_back("TMPDIR=" + scratch.path().string());
-  EngineProcess engine(options.fuzzer, arguments, environment, (work / "engine.log").string());
-  if (!engine.started()) {
-    release_interruptions();
-    error = "cannot start " + quoted(options.fuzzer, 4096);
-    return std::nullopt;
-  }
-
-  // 3. Watch: the engine's status, the corpus, the artefacts.
-  LogTail tail((work / "engine.log").string());
-  EngineStats stats;
-  FuzzResult result;
-  std::set<std::string> known = corpus_names(options.corpus_dir);
-  result.corpus_inputs = static_cast<int>(known.size());
-  log << "  resuming from " << known.size() << " inputs in " << options.corpus_dir << "\n";
   std::unique_ptr<GeneratorSession> confirmer;
   Profile confirmer_profile;
   if (options.confirm_with) {
@@ -532,53 +592,55 @@ std::optional<FuzzResult> run_fuzz(const FuzzOptions& given, std::ostream& log, 
     const auto own = profile_in_force(confirmer->declared_profile(), std::nullopt, error);
     if (!own) return std::nullopt;
     confirmer_profile = *own;
-    log << "  each finding is confirmed against " << confirmer->name() << "; one it does not make is rounding\n";
   }
+  const std::vector<int> caps = phase_caps(options);
+
+  // 2. Say what runs, and from what.
+  catch_interruptions();
+  log << "manifuzz fuzz: generator " << generator->name() << ", " << options.jobs << " job"
+      << (options.jobs > 1 ? "s" : "") << ", hulls of at most " << caps.front() << " points";
+  if (caps.size() > 1) log << ", growing to " << options.max_points << " in " << caps.size() << " phases";
+  log << ", profile " << options.profile.text() << ", corpus " << options.corpus_dir << ", findings into "
+      << options.out_dir << (options.seconds ? "" : "; Ctrl-C stops") << "\n";
+  FuzzResult result;
+  std::set<std::string> known = corpus_names(options.corpus_dir);
+  result.corpus_inputs = static_cast<int>(known.size());
+  log << "  resuming from " << known.size() << " inputs in " << options.corpus_dir << "\n";
+  if (confirmer) log << "  each finding is confirmed against " << confirmer->name() << "; one it does not make is rounding\n";
   Campaign campaign(options, *generator, confirmer.get(), confirmer_profile, work, log, findings_out);
+
+  // 3. The phases, each a run of the engine on the corpus the last grew: hulls
+  // of a few points first, where a campaign runs three times as many cases a
+  // second and met F62 and O29 to O35 within seconds, then larger ones. Each
+  // takes an equal share of the time left, so that one that overran its
+  // share (an engine takes a few seconds to start and stop) is made up.
   const auto started = Clock::now();
-  double last_sync = 0, last_progress = 0, last_sample = 0;
   result.statistics.sample(0, 0, 0);
-  std::string first_error;
-  while (engine.running() && !interrupted()) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    for (const std::string& line : tail.new_lines()) {
-      read_status(line, stats);
-      if (first_error.empty() && (line.find("ERROR") != std::string::npos || line.rfind("manifold_fuzzer:", 0) == 0))
-        first_error = line;
-    }
-    const double now = since(started);
-    if (now - last_sample >= 1) last_sample = now, result.statistics.sample(now, stats.execs, stats.coverage);
-    if (now - last_sync >= kSyncEvery) {
-      last_sync = now;
-      result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
-      result.corpus_inputs = static_cast<int>(known.size());
-      campaign.scan_artefacts(now, result);
-    }
-    if (options.progress_every > 0 && now - last_progress >= options.progress_every) {
-      last_progress = now;
-      print_progress(log, now, stats, result, engine.resident_mb());
+  PhaseEnd last;
+  for (size_t phase = 0; phase < caps.size() && !interrupted(); ++phase) {
+    if (caps.size() > 1 && phase > 0)
+      log << "  " << static_cast<long long>(since(started)) << " s  phase " << phase + 1 << " of " << caps.size()
+          << ": hulls of at most " << caps[phase] << " points\n";
+    const double share =
+        options.seconds ? std::max(1.0, (*options.seconds - since(started)) / static_cast<double>(caps.size() - phase))
+                        : 0;
+    last = run_phase(options, caps[phase], share, static_cast<int>(phase), work, scratch, campaign, started, known,
+                     result, log, error);
+    if (!last.started) {
+      release_interruptions();
+      return std::nullopt;
     }
   }
 
-  // 4. Stop cleanly, keep what was found, say what happened.
+  // 4. Say what happened. An engine that ended by itself, with an error,
+  // before fuzzing: not a campaign that found nothing.
   result.interrupted = interrupted();
-  // An engine that ended by itself, with an error, before fuzzing: not a
-  // campaign that found nothing.
-  const int ended_with = engine.exit_status();
-  engine.stop();
-  for (const std::string& line : tail.new_lines()) read_status(line, stats);
   result.seconds = since(started);
-  result.corpus_added += sync_corpus(work / "new", options.corpus_dir, known);
-  result.corpus_inputs = static_cast<int>(known.size());
-  if (!result.interrupted) campaign.scan_artefacts(result.seconds, result);
   release_interruptions();
-  result.execs = stats.execs;
-  result.coverage = stats.coverage;
-  result.statistics.sample(result.seconds, stats.execs, stats.coverage);
-  result.features = stats.features;
-  if (result.execs == 0 && !result.interrupted && ended_with != 0) {
-    error = quoted(options.fuzzer, 4096) + " stopped before fuzzing (exit " + std::to_string(ended_with) + ")" +
-            (first_error.empty() ? "" : ": " + printable(first_error, 300));
+  result.statistics.sample(result.seconds, result.execs, result.coverage);
+  if (result.execs == 0 && !result.interrupted && last.exit_status != 0) {
+    error = quoted(options.fuzzer, 4096) + " stopped before fuzzing (exit " + std::to_string(last.exit_status) + ")" +
+            (last.first_error.empty() ? "" : ": " + printable(last.first_error, 300));
     fs::remove_all(work, ec);
     return std::nullopt;
   }

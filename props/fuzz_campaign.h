@@ -28,6 +28,10 @@ struct FuzzOptions {
   /// builder's overflow within 30 s each, which campaigns of the full size
   /// had not (stop 68).
   int max_points = kFuzzMaxPoints;
+  /// --max-points A..B: a campaign that grows its hulls, in phases of equal
+  /// time on the one corpus, at most A points, then twice as many, up to
+  /// max_points (B); 0 for one phase at max_points. Needs `seconds`.
+  int least_points = 0;
   std::string corpus_dir = "fuzz-corpus";
   std::string out_dir = "failures";
   double call_timeout = 5;

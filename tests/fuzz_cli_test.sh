@@ -72,6 +72,14 @@ grown=$(ls "$scratch/corpus" | wc -l)
 check test "$grown" -gt 17
 "$manifuzz" fuzz --seconds 3 --corpus "$scratch/corpus" --out "$scratch/out" >/dev/null 2>"$scratch/second.log"
 check grep -q "resuming from $grown inputs" "$scratch/second.log"
+# A campaign that grows its hulls (--max-points A..B): phases on the one
+# corpus at 5 points, then 10, then 16, each a share of --seconds.
+"$manifuzz" fuzz --seconds 9 --max-points 5..16 --corpus "$scratch/corpus-grown" --out "$scratch/out" >/dev/null \
+  2>"$scratch/grown.log"
+check grep -q "hulls of at most 5 points, growing to 16 in 3 phases" "$scratch/grown.log"
+check grep -q "phase 2 of 3: hulls of at most 10 points" "$scratch/grown.log"
+check grep -q "phase 3 of 3: hulls of at most 16 points" "$scratch/grown.log"
+check grep -q "^manifuzz fuzz: [0-9]* execs in" "$scratch/grown.log"
 
 # 4. Killed with SIGKILL midway: every input in the corpus is whole (named
 # by its SHA-1, or a seed), and the next campaign starts from it.
@@ -119,7 +127,8 @@ check test ! -e "/dev/shm/manifuzz-fuzz-$fuzzing"
 check test -z "$(ls -A "$scratch/out-int" | grep '^\.fuzz-' || true)"
 
 # 6. Bad input: one line, exit 2.
-for args in "--jobs 0" "--seconds 0" "--seconds x" "--corpus ''" "--frobnicate" "--max-points 3" "--max-points 65"; do
+for args in "--jobs 0" "--seconds 0" "--seconds x" "--corpus ''" "--frobnicate" "--max-points 3" "--max-points 65" \
+  "--max-points 8..5" "--max-points 5..65" "--max-points 5.. --seconds 5" "--max-points 5..16"; do
   eval "\"$manifuzz\" fuzz $args" >/dev/null 2>"$scratch/err"
   status=$?
   check test "$status" -eq 2

@@ -1,4 +1,4 @@
-// manifuzz fuzz --generator G [--seconds T] [--jobs J] [--max-points N] [--corpus DIR] [--out DIR] [--strict]
+// manifuzz fuzz --generator G [--seconds T] [--jobs J] [--max-points N|A..B] [--corpus DIR] [--out DIR] [--strict]
 // libFuzzer's manifold_fuzzer in fork mode on J cores (props/fuzz_campaign.h).
 // The fuzzer program comes with the clang build (beside this manifuzz) or
 // is named by MANIFUZZ_FUZZER.
@@ -22,7 +22,7 @@ namespace mfz::cli {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: manifuzz fuzz --generator G [--seconds T] [--jobs J] [--max-points N] [--corpus DIR] [--out DIR] [--strict] [--profile P] [--report DIR]";
+    "usage: manifuzz fuzz --generator G [--seconds T] [--jobs J] [--max-points N|A..B] [--corpus DIR] [--out DIR] [--strict] [--profile P] [--report DIR]";
 
 int fail(const std::string& why) {
   std::cerr << "manifuzz fuzz: " << why << "\n";
@@ -132,11 +132,19 @@ int fuzz_command(const std::vector<std::string>& words) {
   const auto jobs = parse_count(args->get("--jobs", "1"), 1, 4 * cores);
   if (!jobs) return fail("--jobs takes a whole number from 1 to " + std::to_string(4 * cores));
   options.jobs = static_cast<int>(*jobs);
-  const auto max_points = parse_count(args->get("--max-points", std::to_string(props::kFuzzMaxPoints)), 4,
+  // --max-points N, or A..B: a campaign growing from A points to B.
+  const std::string points = args->get("--max-points", std::to_string(props::kFuzzMaxPoints));
+  const size_t dots = points.find("..");
+  const auto max_points = parse_count(dots == std::string::npos ? points : points.substr(dots + 2), 4,
                                       props::kFuzzMaxPoints);
-  if (!max_points)
-    return fail("--max-points takes a whole number from 4 to " + std::to_string(props::kFuzzMaxPoints));
+  const auto least_points =
+      dots == std::string::npos ? std::optional<long long>(0) : parse_count(points.substr(0, dots), 4, props::kFuzzMaxPoints);
+  if (!max_points || !least_points || (dots != std::string::npos && !(*least_points < *max_points)))
+    return fail("--max-points takes a whole number from 4 to " + std::to_string(props::kFuzzMaxPoints) +
+                ", or A..B with A < B (a campaign growing from A points to B)");
   options.max_points = static_cast<int>(*max_points);
+  options.least_points = static_cast<int>(*least_points);
+  if (options.least_points > 0 && !options.seconds) return fail("--max-points A..B needs --seconds");
   const auto timeout = call_timeout(*args, error);
   if (!timeout) return fail(error);
   options.call_timeout = *timeout;
