@@ -344,6 +344,30 @@ std::pair<ClipPolygon, ClipPolygon> clipped_by_computed_and_kept_sides(const Cli
   return {computed, kept};
 }
 
+// A reference loop whose corner at (1, 1) holds an edge 4e-13 long, turned
+// the wrong way as rounding leaves such an edge (the loop reflex there):
+// its side would cut the corner (0, 1) off the unit square. The cap through
+// that edge stands for it, on the sides kept and the sides computed alike,
+// and the square is clipped whole. A hull whose two corners 3e-13 apart
+// made such an edge gave a side turned one way in one argument order and
+// another way swapped, contacts 0.89 apart (F64, swap-symmetry, manifuzz
+// fuzz --max-points 8).
+TEST(ClippingGenerator, ASideThroughAnEdgeTooShortForTheRoundingIsLeftToItsCap) {
+  ClipPolygon loop, incident;
+  for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1 - 4e-13, 1 - 1e-13, 0), Vec3(0, 1, 0)})
+    loop.push(p);
+  for (const Vec3& p : {Vec3(-0.5, -0.5, -0.1), Vec3(1.5, -0.5, -0.1), Vec3(1.5, 1.5, -0.1), Vec3(-0.5, 1.5, -0.1)})
+    incident.push(p);
+  const auto [computed, kept] = clipped_by_computed_and_kept_sides(loop, Vec3(0, 0, 1), 1, incident);
+  for (const ClipPolygon* clipped : {&computed, &kept}) {
+    bool corner = false;
+    for (int k = 0; k < clipped->size(); ++k)
+      corner = corner || ((*clipped)[k] - Vec3(0, 1, -0.1)).norm() < 1e-9;
+    EXPECT_TRUE(corner) << (clipped == &computed ? "computed" : "kept") << " sides cut the corner (0, 1) off";
+    for (int k = 0; k < clipped->size(); ++k) EXPECT_LE((*clipped)[k].x() + (*clipped)[k].y(), 2 + 1e-9);
+  }
+}
+
 // An incident edge 6000 long in the side plane x = 1e4 of a square
 // reference face, tilted 2.3e-13 from it: its ends stand 7e-10 either side,
 // five times the frame's rounding at the origin and far inside it 1e8 out.

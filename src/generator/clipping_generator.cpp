@@ -549,7 +549,13 @@ bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& ca
 // the bisector of the long edges either side, which the rounding does not
 // turn: at a convex corner the loop lies behind it, as behind a sharp
 // corner's cap. Where those edges run on in one line, their sides bound
-// the prism already.
+// the prism already. The side through the short edge is then left out: its
+// direction is rounding's, and it may cut into the loop. A hull's two
+// corners 3e-13 apart gave a reference edge 4e-13 long whose side, turned
+// one way in one argument order and another way swapped, cut the incident
+// face 63 from its deepest corner in one run and 0.89 in the other, where
+// the swapped run kept a second contact (F64, swap-symmetry, manifuzz fuzz
+// --max-points 8).
 bool short_edge_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap) {
   constexpr double kEdgeOverRounding = 1e3;
   const int n = loop.size();
@@ -582,7 +588,7 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
   for (int k = 0; k < sides.count && sides.cap_count < PrismSides::kMaxCaps; ++k)
     if (sharp_corner_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
   for (int k = 0; k < sides.count && sides.cap_count < PrismSides::kMaxCaps; ++k)
-    if (short_edge_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
+    if (short_edge_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count, sides.spans[k] = false;
 }
 
 
@@ -642,11 +648,14 @@ bool clip_to_sharp_corner_caps(const ClipFace& reference, ClipPolygon& incident,
 
 bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPolygon& scratch, ClipTrace* trace) {
   const SideBands bands = side_bands(reference, incident);
-  Plane computed;
+  const bool kept = reference.sides && reference.sides->count > 0;
+  const double rounding = kept ? 0 : corner_rounding(reference);
+  Plane computed, cap;
   SideEdge computed_edge;
   for (int k = 0; k < reference.polygon->size(); ++k) {
     const PrismSide side = prism_side(reference, k, computed, computed_edge);
     if (!side.plane) continue;
+    if (!kept && short_edge_cap(*reference.polygon, k, rounding, cap)) continue;  // its cap stands for it
     if (!clip_to_side(incident, *side.plane, side.edge, bands, scratch)) return false;
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
