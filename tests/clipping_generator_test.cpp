@@ -368,6 +368,28 @@ TEST(ClippingGenerator, ASideThroughAnEdgeTooShortForTheRoundingIsLeftToItsCap) 
   }
 }
 
+// A sliver loop 14,142 long and 1.2e-8 wide, in a frame whose rounding is
+// 15.6 (1.1e15 from the origin): its edges are too short for a sharp
+// corner's cap, and its sides, 1.7e-12 rad apart, cross anywhere. The
+// loop's extent caps hold the clip to within the rounding of the loop, on
+// the sides kept and computed alike; an incident face 5e10 across, all
+// around the sliver, was clipped to a point 3e8 beyond its end (F65).
+TEST(ClippingGenerator, AReferenceSliverTooShortForItsCornersCapsClipsWithinItsExtent) {
+  const Vec3 far(6.7e14, -8.9e14, 3.4e14);
+  ClipPolygon loop, incident;
+  for (const Vec3& p : {Vec3(-5000, -5000, 0), Vec3(4999.99999998268, 5000, 0), Vec3(0, 0, 0)}) loop.push(far + p);
+  for (const Vec3& p : {Vec3(5e10, 0, -1), Vec3(-5e10, -5e10, -1), Vec3(0, 3e8, -1)}) incident.push(far + p);
+  const double world = 1.1e15, rounding = tol::world_rounding(world);
+  const auto [computed, kept] = clipped_by_computed_and_kept_sides(loop, Vec3(0, 0, 1), world, incident);
+  const Vec3 along = Vec3(1, 1, 0).normalized();
+  for (const ClipPolygon* clipped : {&computed, &kept})
+    for (int k = 0; k < clipped->size(); ++k) {
+      const Vec3 p = (*clipped)[k] - far;
+      EXPECT_LE(std::abs(p.dot(along)), 7071.07 + 2 * rounding) << (clipped == &computed ? "computed" : "kept");
+      EXPECT_LE(std::abs(p.dot(Vec3(-1, 1, 0).normalized())), 2 * rounding) << (clipped == &computed ? "computed" : "kept");
+    }
+}
+
 // An incident edge 6000 long in the side plane x = 1e4 of a square
 // reference face, tilted 2.3e-13 from it: its ends stand 7e-10 either side,
 // five times the frame's rounding at the origin and far inside it 1e8 out.

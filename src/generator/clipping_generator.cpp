@@ -572,6 +572,40 @@ bool short_edge_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap)
   return true;
 }
 
+// F65: an acute corner whose edges are too short for a cap's direction
+// (sharp_corner_cap asks 1000 times the rounding) gets none, and two sides
+// t apart may then cross anywhere along its bisector. The loop's extent
+// along its longest edge and across it, each widened by the rounding,
+// bounds the prism there instead: four caps the loop lies behind, which
+// take nothing away in exact arithmetic. A sliver face 14,142 long and
+// 1.2e-8 wide, 1.1e15 from the origin (the rounding there 15.6, its edges
+// under the 15,600 a cap asks), let an incident edge cross its side 3e8
+// beyond it, and that crossing was a contact (on-surface 0.0038 L,
+// far-from-origin, manifuzz fuzz --max-points 8, open as O36).
+int extent_caps(const ClipPolygon& loop, const Vec3& normal, double rounding, Plane* caps) {
+  constexpr double kEdgeOverRounding = 1e3;
+  const int n = loop.size();
+  const double shortest = kEdgeOverRounding * rounding;
+  bool uncapped = false;
+  int longest = 0;
+  double longest_squared = -1;
+  for (int k = 0; k < n; ++k) {
+    const Vec3 in = loop[k] - loop[previous_corner(k, n)], out = loop[next_corner(k, n)] - loop[k];
+    uncapped = uncapped || (in.dot(out) < 0 && !(std::min(in.squaredNorm(), out.squaredNorm()) > shortest * shortest));
+    if (out.squaredNorm() > longest_squared) longest_squared = out.squaredNorm(), longest = k;
+  }
+  if (!uncapped || !(longest_squared > 0)) return 0;
+  const Vec3 along = (loop[next_corner(longest, n)] - loop[longest]).normalized();
+  const Vec3 across = normal.cross(along).normalized();
+  int count = 0;
+  for (const Vec3& axis : {along, Vec3(-along), across, Vec3(-across)}) {
+    double reach = -INFINITY;
+    for (int k = 0; k < n; ++k) reach = std::max(reach, axis.dot(loop[k]));
+    caps[count++] = Plane{axis, reach + rounding};
+  }
+  return count;
+}
+
 double corner_rounding(const ClipFace& reference) {
   const double largest = reference.sides ? reference.sides->largest : largest_coordinate(*reference.polygon);
   return tol::world_rounding(std::max(largest, reference.world_resolution));
@@ -589,6 +623,8 @@ void keep_prism_sides(const ClipFace& reference, PrismSides& sides) {
     if (sharp_corner_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count;
   for (int k = 0; k < sides.count && sides.cap_count < PrismSides::kMaxCaps; ++k)
     if (short_edge_cap(*reference.polygon, k, rounding, sides.cap[sides.cap_count])) ++sides.cap_count, sides.spans[k] = false;
+  if (sides.cap_count + kExtentCaps <= PrismSides::kMaxCaps)
+    sides.cap_count += extent_caps(*reference.polygon, reference.normal, rounding, sides.cap + sides.cap_count);
 }
 
 
@@ -643,6 +679,10 @@ bool clip_to_sharp_corner_caps(const ClipFace& reference, ClipPolygon& incident,
     if (sharp_corner_cap(*reference.polygon, k, rounding, cap) && !clip_cap(cap)) return false;
   for (int k = 0; k < reference.polygon->size(); ++k)
     if (short_edge_cap(*reference.polygon, k, rounding, cap) && !clip_cap(cap)) return false;
+  Plane extent[kExtentCaps];
+  const int extents = extent_caps(*reference.polygon, reference.normal, rounding, extent);
+  for (int c = 0; c < extents; ++c)
+    if (!clip_cap(extent[c])) return false;
   return true;
 }
 

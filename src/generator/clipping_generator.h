@@ -38,6 +38,9 @@ inline constexpr int kKeptPrismSides = 64;
 /// them: the incident faces, and F27's faces below the reference plane
 /// (a 64-gon cap's sides were computed again for each of its cylinder's
 /// faces, 4% of the benchmark's instructions).
+/// The caps of a loop's extent (F65), when an acute corner is too short for its own.
+inline constexpr int kExtentCaps = 4;
+
 struct PrismSides {
   int count = 0;  ///< the loop's size; 0: not kept
   Plane plane[kKeptPrismSides];
@@ -46,9 +49,10 @@ struct PrismSides {
   /// The caps of the loop's sharp corners (sharp_corner_cap), in loop
   /// order. A sharp corner is acute, and a convex loop has at most three
   /// acute corners (their outer angles, each over 90 degrees, sum to at most
-  /// 360); one more is room for a loop that rounding bends. Room for one a
-  /// side put the sanitized build's call past 64 KiB of stack (66,616 bytes).
-  static constexpr int kMaxCaps = 4;
+  /// 360); one more is room for a loop that rounding bends, and four more
+  /// for the loop's extent (F65). Room for one a side put the sanitized
+  /// build's call past 64 KiB of stack (66,616 bytes).
+  static constexpr int kMaxCaps = 4 + kExtentCaps;
   Plane cap[kMaxCaps];
   int cap_count = 0;
   /// The loop's largest coordinate, which side_bands reads for every face
