@@ -346,13 +346,13 @@ std::pair<ClipPolygon, ClipPolygon> clipped_by_computed_and_kept_sides(const Cli
 
 // A reference loop whose corner at (1, 1) holds an edge 4e-13 long, turned
 // the wrong way as rounding leaves such an edge (the loop reflex there):
-// its side would cut the corner (0, 1) off the unit square. The cap through
-// that edge stands for it, on the sides kept and the sides computed alike,
-// and the square is clipped whole. A hull whose two corners 3e-13 apart
-// made such an edge gave a side turned one way in one argument order and
-// another way swapped, contacts 0.89 apart (F64, swap-symmetry, manifuzz
-// fuzz --max-points 8).
-TEST(ClippingGenerator, ASideThroughAnEdgeTooShortForTheRoundingIsLeftToItsCap) {
+// its side, turned past its neighbour's, would cut the corner (0, 1) off
+// the unit square. It is held at its neighbour's normal, on the sides kept
+// and the sides computed alike, and the square is clipped whole. A hull
+// whose two corners 3e-13 apart made such an edge gave a side turned one
+// way in one argument order and another way swapped, contacts 0.89 apart
+// (F64, swap-symmetry, manifuzz fuzz --max-points 8).
+TEST(ClippingGenerator, ASideThroughAnEdgeTooShortForTheRoundingTurnsNoFurtherThanItsNeighbours) {
   ClipPolygon loop, incident;
   for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(1 - 4e-13, 1 - 1e-13, 0), Vec3(0, 1, 0)})
     loop.push(p);
