@@ -33,14 +33,15 @@ struct ClipTrace {
 /// computed as each is clipped against.
 inline constexpr int kKeptPrismSides = 64;
 
+/// The caps of a loop's extent (F65), where an acute corner's edges are too
+/// short for a cap of its own.
+inline constexpr int kExtentCaps = 4;
+
 /// The kept sides of the reference prism (reference_side for each edge of
 /// the loop, in loop order). Every face clipped against the prism reads
 /// them: the incident faces, and F27's faces below the reference plane
 /// (a 64-gon cap's sides were computed again for each of its cylinder's
 /// faces, 4% of the benchmark's instructions).
-/// The caps of a loop's extent (F65), when an acute corner is too short for its own.
-inline constexpr int kExtentCaps = 4;
-
 struct PrismSides {
   int count = 0;  ///< the loop's size; 0: not kept
   Plane plane[kKeptPrismSides];

@@ -9,13 +9,15 @@ namespace mfz {
 
 namespace {
 
-// None where a face axis is among the least along that direction: a face's
-// normal is known to the rounding of its own plane, however nearly parallel
-// the edges that also span it (a tetrahedron around a cube, an edge pair
-// along A's face normal: Bullet's recorded depth-exact finding, B3).
+// Along a face axis among the least along that direction, the depth gets
+// no room: a face's normal is known to the rounding of its own plane,
+// however nearly parallel the edges that also span it (a tetrahedron around
+// a cube, an edge pair along A's face normal: Bullet's recorded depth-exact
+// finding, B3, which a first version passed).
 LeastEdgePair least_edge_pair(const Scene& s, const std::vector<RankedAxis>& axes, bool face_contact) {
   LeastEdgePair pair;
-  if (axes.empty() || axes[0].kind != AxisKind::edge_edge || face_contact) return pair;
+  if (axes.empty() || axes[0].kind != AxisKind::edge_edge) return pair;
+  pair.along_a_face = face_contact;
   const HullEdge& ea = s.hull_a.edges()[axes[0].feature_a];
   const HullEdge& eb = s.hull_b.edges()[axes[0].feature_b];
   const Vec3 a = s.world_a[ea.v1] - s.world_a[ea.v0];

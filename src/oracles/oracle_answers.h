@@ -21,6 +21,9 @@ namespace mfz {
 /// overlap along the axis (invariants.h, depth-exact; the relations).
 struct LeastEdgePair {
   bool present = false;
+  /// A face axis lies along it too: the direction is the face's, known to
+  /// the rounding of its own plane, and the depth has no room.
+  bool along_a_face = false;
   double sine = 0;          ///< of the angle between the two edges
   double shorter_edge = 0;  ///< the shorter one's length
   /// sine x shorter edge / L: the same in every frame a relation makes.
@@ -28,7 +31,7 @@ struct LeastEdgePair {
   /// How far the overlap along the axis may move with the frame's `rounding`:
   /// the axis turns by rounding / (shorter edge x sine), and the overlap by
   /// that turn times the hulls' reach along it, 2 L at most.
-  double depth_room(double rounding) const { return present ? 2 * rounding / conditioning : 0; }
+  double depth_room(double rounding) const { return present && !along_a_face ? 2 * rounding / conditioning : 0; }
 };
 
 /// Everything the checks compare a manifold against, computed once per case.
