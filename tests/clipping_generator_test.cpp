@@ -390,6 +390,27 @@ TEST(ClippingGenerator, AReferenceSliverTooShortForItsCornersCapsClipsWithinItsE
     }
 }
 
+// A reference sliver 1.6e9 long whose tip has a sine of 6.1e-4, and an
+// incident triangle whose edge runs 1e-9 rad off the side through the
+// sliver's upper edge, its end 10 past the tip and on the lower side's
+// plane. F53's band keeps that edge whole in the upper side (its end
+// 6.1e-3 outside it), and the lower side keeps the end as on its plane:
+// the clip kept a point 10 beyond the tip, off the hull (F66,
+// vertex-order). Every clipped point lies within the sliver's extent.
+TEST(ClippingGenerator, AnEdgeHeldInASidePlaneIsCappedAtTheAcuteCornerItRunsPast) {
+  const double tip = 1641134911.7389433;
+  ClipPolygon loop, incident;
+  for (const Vec3& v : {Vec3(-5e5, -5e5, -5e5), Vec3(5e5, 5e5, -5e5), Vec3(tip, -5e5, -5e5)}) loop.push(v);
+  for (const Vec3& p : {Vec3(1641134921.7450404, -5e5, 0), Vec3(5e5, 5e5, 5e5), Vec3(0, -5e5, 5e5)})
+    incident.push(p);
+  const double world = tip, rounding = tol::world_rounding(world);
+  const auto [computed, kept] = clipped_by_computed_and_kept_sides(loop, Vec3(0, 0, -1), world, incident);
+  for (const auto& [clipped, which] : {std::pair{&computed, "computed"}, std::pair{&kept, "kept"}}) {
+    ASSERT_GE(clipped->size(), 3) << which;
+    for (int k = 0; k < clipped->size(); ++k) EXPECT_LE((*clipped)[k].x(), tip + 1e3 * rounding) << which << " sides, point " << k;
+  }
+}
+
 // An incident edge 6000 long in the side plane x = 1e4 of a square
 // reference face, tilted 2.3e-13 from it: its ends stand 7e-10 either side,
 // five times the frame's rounding at the origin and far inside it 1e8 out.

@@ -24,7 +24,7 @@ bool along_edge(const Vec3& foot, const SideEdge* edge, double slack) {
 }  // namespace
 
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane, double near_plane,
-                   const SideEdge* edge, double in_plane_sine, double in_plane_band) {
+                   const SideEdge* edge, double in_plane_sine, double in_plane_band, bool* held_in_plane) {
   out.clear();
   const int n = in.size();
   if (n <= 0) return true;
@@ -47,8 +47,11 @@ bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, 
   // told by one comparison (measuring their edges cost F53 1% of an 8-point
   // call).
   const auto inside = [&](int k) {
-    return d[k] <= on_plane ||
-           (d[k] <= in_plane_band && (lies_in_plane(previous_corner(k, n), k) || lies_in_plane(k, next_corner(k, n))));
+    if (d[k] <= on_plane) return true;
+    const bool held =
+        d[k] <= in_plane_band && (lies_in_plane(previous_corner(k, n), k) || lies_in_plane(k, next_corner(k, n)));
+    if (held && held_in_plane) *held_in_plane = true;
+    return held;
   };
   bool ok = true;
   Vec3 start = in[n - 1];

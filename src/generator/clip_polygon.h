@@ -80,11 +80,13 @@ struct SideEdge {
 /// in the plane to `in_plane_sine` (both ends within that sine times its
 /// length) are inside too, and the edge is kept whole; `in_plane_band` bounds
 /// that sine times the longest edge the polygon can have (0: no edge lies
-/// in the plane). Returns false if `out` overflowed (cannot happen when
-/// in.size() < capacity).
+/// in the plane); `held_in_plane`, when given, is set true where such an
+/// end further out than `on_plane` was kept (and left as it was otherwise).
+/// Returns false if `out` overflowed (cannot happen when in.size() <
+/// capacity).
 bool clip_to_plane(const ClipPolygon& in, const Plane& plane, ClipPolygon& out, double on_plane = 0,
                    double near_plane = 0, const SideEdge* edge = nullptr, double in_plane_sine = 0,
-                   double in_plane_band = 0);
+                   double in_plane_band = 0, bool* held_in_plane = nullptr);
 
 /// The tutorial's last step: drops the points outside `plane` without adding
 /// crossing points (it wants contact points, not the clipped polygon).

@@ -515,7 +515,10 @@ bool reference_side(const ClipFace& reference, int k, Plane& side, SideEdge& edg
 // (t = 1.2e-14), 5e5 from the origin, let a contact stand 4.97e-4 past its
 // tip, outside the hull, the sides' rounding over t being longer than the
 // needle (far-from-origin, open as O12).
-bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap) {
+//
+// `band` is how far outside a side a point may be kept: the rounding, or
+// F66's wider band (acute_corner_cap).
+bool corner_cap(const ClipPolygon& loop, int k, double rounding, double band, Plane& cap) {
   // Directions known to 1e-3 rad at worst: an acute corner's caps may lean
   // by nearly 45 degrees and still leave the polygon behind them.
   constexpr double kEdgeOverRounding = 1e3;
@@ -528,15 +531,35 @@ bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& ca
   const double in_squared = in.squaredNorm(), out_squared = out.squaredNorm();
   const double shortest = kEdgeOverRounding * rounding;
   if (!(std::min(in_squared, out_squared) > shortest * shortest)) return false;
-  // sin t = |in x out| / (|in| |out|); sharp where sin t 1e-9 |longer| < rounding.
+  // sin t = |in x out| / (|in| |out|); sharp where sin t 1e-9 |longer| < band.
   const double sine_squared = in.cross(out).squaredNorm() / in_squared / out_squared;
-  const double bound = rounding / tol::kTie;
+  const double bound = band / tol::kTie;
   if (!(sine_squared * std::max(in_squared, out_squared) < bound * bound)) return false;
   const Vec3 along_in = in / std::sqrt(in_squared), along_out = out / std::sqrt(out_squared);
   // |along_in - along_out| is at least sqrt(2) at an acute corner.
   const Vec3 bisector = (along_in - along_out).normalized();
   cap = Plane{bisector, bisector.dot(corner)};
   return true;
+}
+
+bool sharp_corner_cap(const ClipPolygon& loop, int k, double rounding, Plane& cap) {
+  return corner_cap(loop, k, rounding, rounding, cap);
+}
+
+// F66: F53 keeps an incident edge whole where it lies in a side plane to
+// the coplanar sine, its ends up to that sine times its length outside
+// (SideBands::in_plane_band); at a corner of sine t such an end may stand
+// that band over t beyond the corner, along the other side, inside both.
+// A reference sliver 1.6e9 long, its tip's sine 6.1e-4, and an edge of the
+// incident hull 1e-9 rad off the side through one of its long edges: the
+// edge's end 10 past the tip, 6.1e-3 outside that side, within the band
+// (5.7), and on the other side's plane, was a contact 10 off the sliver's
+// hull, where the cap a sharp corner gets asks the rounding (2.3e-5) over
+// t to reach past 1e-9 of the edge (vertex-order, manifuzz fuzz
+// --max-points 8). Where a side kept such an end, every corner where that
+// band over t reaches so far is capped, as a sharp corner is.
+bool acute_corner_cap(const ClipPolygon& loop, int k, double rounding, double in_plane_band, Plane& cap) {
+  return corner_cap(loop, k, rounding, std::max(rounding, in_plane_band), cap);
 }
 
 // F57: an edge of the reference loop too short for the world's rounding to
@@ -678,10 +701,10 @@ bool inside_side(const ClipPolygon& polygon, const Plane& side, double on_plane)
 // clipped 28 side faces of the other cylinder a call through its 64 sides,
 // a third of the call, to add a point twice in 7,242 faces).
 bool clip_to_side(ClipPolygon& incident, const Plane& side, const SideEdge* edge, const SideBands& bands,
-                  ClipPolygon& scratch) {
+                  ClipPolygon& scratch, bool* held_in_plane = nullptr) {
   if (inside_side(incident, side, bands.on_plane)) return true;
   if (!clip_to_plane(incident, side, scratch, bands.on_plane, bands.near_plane, edge, bands.in_plane_sine,
-                     bands.in_plane_band))
+                     bands.in_plane_band, held_in_plane))
     return false;
   incident.take(scratch);
   return true;
@@ -691,19 +714,24 @@ bool clip_to_side(ClipPolygon& incident, const Plane& side, const SideEdge* edge
 // made, and a cap's own foot crossing needs no edge to lie along, every
 // point being inside the sides by then.
 bool clip_to_sharp_corner_caps(const ClipFace& reference, ClipPolygon& incident, const SideBands& bands,
-                               ClipPolygon& scratch, ClipTrace* trace) {
+                               bool held_in_plane, ClipPolygon& scratch, ClipTrace* trace) {
   const PrismSides* kept = reference.sides;
   const auto clip_cap = [&](const Plane& cap) {
     if (!clip_to_side(incident, cap, nullptr, bands, scratch)) return false;
     if (trace) record(trace, "clipped against the cap of a sharp corner of the reference face", incident);
     return true;
   };
+  const double rounding = corner_rounding(reference);
+  if (held_in_plane) {  // F66
+    Plane cap;
+    for (int k = 0; k < reference.polygon->size(); ++k)
+      if (acute_corner_cap(*reference.polygon, k, rounding, bands.in_plane_band, cap) && !clip_cap(cap)) return false;
+  }
   if (kept && kept->count > 0) {
     for (int c = 0; c < kept->cap_count; ++c)
       if (!clip_cap(kept->cap[c])) return false;
     return true;
   }
-  const double rounding = corner_rounding(reference);
   Plane cap;
   for (int k = 0; k < reference.polygon->size(); ++k)
     if (sharp_corner_cap(*reference.polygon, k, rounding, cap) && !clip_cap(cap)) return false;
@@ -722,16 +750,17 @@ bool clip_with_scratch(const ClipFace& reference, ClipPolygon& incident, ClipPol
   const double rounding = kept ? 0 : corner_rounding(reference);
   Plane computed, cap;
   SideEdge computed_edge;
+  bool held_in_plane = false;  // an end kept outside a side as its edge lies in it (F53, F66)
   for (int k = 0; k < reference.polygon->size(); ++k) {
     const PrismSide side = prism_side(reference, k, computed, computed_edge);
     if (!side.plane) continue;
     if (!kept && short_edge_cap(*reference.polygon, k, rounding, cap))
       hold_side_between_neighbours(reference, k, computed);  // F64, as keep_prism_sides holds it
-    if (!clip_to_side(incident, *side.plane, side.edge, bands, scratch)) return false;
+    if (!clip_to_side(incident, *side.plane, side.edge, bands, scratch, &held_in_plane)) return false;
     if (trace)
       record(trace, "clipped against the side of the reference prism through edge " + std::to_string(k), incident);
   }
-  return clip_to_sharp_corner_caps(reference, incident, bands, scratch, trace);
+  return clip_to_sharp_corner_caps(reference, incident, bands, held_in_plane, scratch, trace);
 }
 
 // Apart, so that its polygon is on the stack only when the caller gave no
