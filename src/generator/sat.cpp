@@ -455,11 +455,14 @@ struct SatWorkspace {
   bool left_out[kMaxArcs];       ///< B's arcs left out of every row
   double row_margin[kMaxArcs];   ///< arcs_above of A's arcs
   double out_margin[kMaxArcs];   ///< and of B's
+  double ball_bound_a[kTopologyMaxFaces];  ///< each face of A bounded by B's ball (FaceCeiling)
+  double ball_bound_b[kTopologyMaxFaces];  ///< and each face of B by A's
   AxisSupport support;  ///< what an edge axis was named by
   PairBoundWork pairs;  ///< a row's pairs, bounded in lanes
   ArcEndWork arc_ends;  ///< a row's pairs, tested for an axis along an arc's end in lanes
   int measured_in_full = 0;  ///< edge pairs projected in full (edge_pairs_measured_in_full)
   int formed_alone = 0;      ///< large hulls' pairs whose axis was formed one at a time (edge_pairs_formed_alone)
+  int faces_past_balls = 0;  ///< faces the other hull's ball left a chance (faces_past_the_balls)
 };
 
 [[gnu::noinline]] SatWorkspace& sat_workspace() {
@@ -496,6 +499,57 @@ class FaceNormalProjections {
   // A closed hull of 16 vertices has at most 28 faces.
   static constexpr int kFaces = 32;
   double x_[kFaces], y_[kFaces], z_[kFaces], low_[kFaces], high_[kFaces];
+};
+
+// Large hulls' faces bounded by the other hull's ball, all before any is
+// measured, and the overlap along the face the balls bound least, measured
+// in full: a ceiling on the depth SAT finds, as the hint's is on the edge
+// pairs' (a face axis that wins overlaps at most F14's slack more than
+// that face, less than the tie room). A face bounded past it by the room
+// could not have won or tied, wherever it comes in the faces' order. Its
+// overlap counts in the face's own direction, held at zero or above, so
+// that no face that separates the hulls in its own direction is left out.
+// Bounded only by the faces measured before it, each face in the loops'
+// order that came before the deepest had its climb and often its
+// measure: 128-point hulls climbed 39 times a call and measured 9 faces.
+class FaceCeiling {
+ public:
+  /// False, bounding nothing, for a hull of more faces than the workspace
+  /// holds.
+  bool bound(const PosedHull& a, const PosedHull& b, const HullSummary& sa, const HullSummary& sb, double* ball_a,
+             double* ball_b) {
+    if (a.face_count() > kTopologyMaxFaces || b.face_count() > kTopologyMaxFaces) return false;
+    ball_a_ = ball_a, ball_b_ = ball_b;
+    const int least_a = bound_faces(a, sb, ball_a), least_b = bound_faces(b, sa, ball_b);
+    if (least_a >= 0) {
+      const Vec3 n = a.world_face_normal(least_a);
+      ceiling_ = std::min(ceiling_, a.project(n).max - b.project(n).min);
+    }
+    if (least_b >= 0) {
+      const Vec3 n = b.world_face_normal(least_b);
+      ceiling_ = std::min(ceiling_, b.project(n).max - a.project(n).min);
+    }
+    ceiling_ = std::max(0.0, ceiling_);
+    return true;
+  }
+  double ceiling() const { return ceiling_; }
+  double ball_a(int f) const { return ball_a_[f]; }
+  double ball_b(int f) const { return ball_b_[f]; }
+
+ private:
+  // Each face of `hull` bounded by the ball inside `other` (its overlap is
+  // at least the face's height over the ball's centre and the ball's
+  // radius); returns the face bounded least, or -1 for none.
+  static int bound_faces(const PosedHull& hull, const HullSummary& other, double* ball) {
+    int least = -1;
+    for (int f = 0; f < hull.face_count(); ++f) {
+      ball[f] = hull.world_face_normal(f).dot(hull.world_face_point(f, 0) - other.centre) + other.inner;
+      if (least < 0 || ball[f] < ball[least]) least = f;
+    }
+    return least;
+  }
+  double ceiling_ = std::numeric_limits<double>::infinity();
+  const double *ball_a_ = nullptr, *ball_b_ = nullptr;
 };
 
 // An edge axis is named by the edges that support the hulls along it, the
@@ -579,7 +633,8 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
       axis_tie_room(std::max(sa.reach, sb.reach), std::max(sa.extent, sb.extent) + sa.reach + sb.reach);
   SatResult best;
   best.depth = std::numeric_limits<double>::infinity();
-  const auto hopeless = [&](double lower) { return lower > best.depth + tie_room; };
+  FaceCeiling faces;  // bounds nothing until `bound`
+  const auto hopeless = [&](double lower) { return lower > std::min(best.depth, faces.ceiling()) + tie_room; };
   // The hint bounds the edge pairs only: their bounds hold in both
   // directions along the axis, so no pair left out could have separated
   // the hulls, while a face is bounded in its own direction alone, and its
@@ -600,6 +655,9 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   // then climb to each face's support.
   const bool face_balls = a.vertex_count() > kFaceBallVertices || b.vertex_count() > kFaceBallVertices;
   if (face_balls) measure_balls();
+  SatWorkspace& work = sat_workspace();
+  work.faces_past_balls = 0;
+  const bool balls_kept = face_balls && faces.bound(a, b, sa, sb, work.ball_bound_a, work.ball_bound_b);
   int on_b = 0, on_a = 0;  // where the last climbs ended: the next one starts there
   // Hulls small enough to project whole without the balls: each onto every
   // face normal of the other at once, in vector lanes.
@@ -607,7 +665,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   const bool faces_in_lanes = !face_balls && b_on_a_faces.project(a, b) && a_on_b_faces.project(b, a);
   for (int f = 0; f < a.face_count(); ++f) {
     const Vec3 n = a.world_face_normal(f);
-    if (face_balls && hopeless(n.dot(a.world_face_point(f, 0) - sb.centre) + sb.inner)) continue;
+    if (face_balls &&
+        hopeless(balls_kept ? faces.ball_a(f) : n.dot(a.world_face_point(f, 0) - sb.centre) + sb.inner))
+      continue;
+    work.faces_past_balls += face_balls;
     if (scan_pairs) {
       // Small hulls: B's whole projection bounds the face, and is kept for
       // `consider` if the face has a chance.
@@ -622,7 +683,10 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
   }
   for (int f = 0; f < b.face_count(); ++f) {
     const Vec3 n = b.world_face_normal(f);
-    if (face_balls && hopeless(n.dot(b.world_face_point(f, 0) - sa.centre) + sa.inner)) continue;
+    if (face_balls &&
+        hopeless(balls_kept ? faces.ball_b(f) : n.dot(b.world_face_point(f, 0) - sa.centre) + sa.inner))
+      continue;
+    work.faces_past_balls += face_balls;
     if (scan_pairs) {
       const Interval ia = faces_in_lanes ? a_on_b_faces[f] : a.project(n);
       if (hopeless(face_height(b, f, n) - ia.min)) continue;
@@ -637,7 +701,6 @@ SatResult bounded_sat(const PosedHull& a, const PosedHull& b, double hint_overla
     parallelepiped_edge_axes(a, b, best);
     return best;
   }
-  SatWorkspace& work = sat_workspace();
   work.measured_in_full = 0, work.formed_alone = 0;
   // The answer once every edge pair has had its chance: an edge axis named
   // by its supporting edges (two parallelepipeds name theirs by zones).
@@ -1067,6 +1130,7 @@ SatResult run_sat(const PosedHull& a, const PosedHull& b) {
 }
 int edge_pairs_measured_in_full() { return sat_workspace().measured_in_full; }
 int edge_pairs_formed_alone() { return sat_workspace().formed_alone; }
+int faces_past_the_balls() { return sat_workspace().faces_past_balls; }
 
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b) { return sat_every_pair(a, b); }
 

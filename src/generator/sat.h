@@ -72,6 +72,10 @@ int edge_pairs_measured_in_full();
 /// the row's tests in vector lanes; the same calls leave the count before.
 /// For tests.
 int edge_pairs_formed_alone();
+/// How many faces of either hull the same call bounded past the other
+/// hull's ball (hulls of more than 16 vertices): each then climbs to, or
+/// projects, the other hull's support. For tests.
+int faces_past_the_balls();
 /// Every axis measured in full and every edge pair tried: what the pruning
 /// and the bounds must agree with.
 SatResult run_sat_every_pair(const PosedHull& a, const PosedHull& b);
