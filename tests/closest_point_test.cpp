@@ -67,6 +67,25 @@ TEST(LoopCorners, NextAndPreviousAreTheRemaindersAroundTheLoop) {
     }
 }
 
+// A face 80,000 across with two corners 1e-9 apart, the edge between them
+// turned back as rounding leaves such an edge: a point 1e-8 above the face,
+// its foot far inside, lies right of that edge. Its closest point is its
+// foot, 1e-8 away, not the nearest long edge's point 20,000 away, which
+// made two hulls 2.3e-8 apart 23.5 apart to the exact oracle (h33).
+TEST(ClosestPointOnPolygon, AFootInsideALoopWithAnEdgeTooShortForItsDirectionIsItsOwnClosestPoint) {
+  const std::vector<Vec3> loop = {Vec3(0, 0, 0), Vec3(80000, 0, 0), Vec3(80000 - 1e-9, -1e-10, 0), Vec3(0, 60000, 0)};
+  const Vec3 p(20000, 20000, 1e-8);
+  for (int turn = 0; turn < 4; ++turn) {  // every corner first in the loop
+    std::vector<Vec3> turned;
+    for (int k = 0; k < 4; ++k) turned.push_back(loop[(k + turn) % 4]);
+    const Vec3 nearest = closest_point_on_polygon(p, turned.data(), 4, Vec3(0, 0, 1));
+    EXPECT_LE((nearest - p).norm(), 1.1e-8) << "loop from corner " << turn;
+    const PolygonCore core = polygon_core(turned.data(), 4, Vec3(0, 0, 1));
+    EXPECT_LE((closest_point_on_polygon(p, turned.data(), 4, Vec3(0, 0, 1), core) - p).norm(), 1.1e-8)
+        << "with its core, from corner " << turn;
+  }
+}
+
 TEST(PolygonCore, IsEmptyForADegenerateLoop) {
   const std::vector<Vec3> segment = {Vec3(0, 0, 0), Vec3(1, 0, 0)};
   EXPECT_LT(polygon_core(segment.data(), 2, Vec3(0, 0, 1)).radius, 0);
