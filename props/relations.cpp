@@ -177,10 +177,10 @@ double least_off_along(const Contact& c, const CrossingSlide& slide, const std::
 //
 // A contact may also be in one run alone where it stands in the column of
 // the other's region along n, to `tol` (which holds the coarser run's
-// rounding), and no deeper than the other's deepest: a clipping generator may leave out a point of
-// a face nearly perpendicular to the reference face that stands, to its
-// frame's rounding, in the column of a point it keeps (F30), for its
-// height there is rounding over the cosine. A face of B 1.4e-5 rad off
+// rounding), and no deeper than the other's deepest: a clipping generator
+// may leave out a point of a face nearly perpendicular to the reference
+// face that stands, to its frame's rounding, in the column of a point it
+// keeps (F30), for its height there is rounding over the cosine. A face of B 1.4e-5 rad off
 // perpendicular, 350 deep along n, had its corner 0.0049 across from the
 // incident face's kept corner: at the origin past the built-in's column
 // (4.1e-3, F46's share of the reference face's perimeter), 1e4 L out
